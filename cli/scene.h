@@ -1,0 +1,45 @@
+// A scene file, loaded and validated: the one place the TOML is read (toml++ stays in the .cpp).
+// Every value is checked; errors name file:line:column and the key.
+#pragma once
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include "povgen/export_params.h"
+#include "sim/params.h"
+
+namespace raintrace::cli {
+
+/// A problem in a scene file. what() is one line: "FILE:LINE:COL: KEY: message".
+class SceneError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Scene {
+  std::filesystem::path source;  ///< the scene file (or the name given to load_scene_string)
+  std::string text;              ///< the file's bytes, for hashing into manifest.json
+  int frames = 48;               ///< [output] frames, in [1, 100000]
+  sim::SimParams sim;            ///< camera is filled identically in sim and look
+  povgen::ExportParams look;
+};
+
+/// Reads and validates a scene file. Throws SceneError (also for a missing/unreadable file).
+Scene load_scene_file(const std::filesystem::path& path);
+
+/// Same from text; source_name is used in messages, base_dir resolves [environment] include.
+Scene load_scene_string(std::string_view toml_text, const std::string& source_name,
+                        const std::filesystem::path& base_dir);
+
+struct FrameRange {
+  int first = 1;  ///< 1-based, inclusive
+  int last = 1;   ///< inclusive
+};
+
+/// Parses "--frames A-B" (or "N") against a scene of `frames` frames; empty = all frames.
+/// Throws std::invalid_argument with a clear message when out of range or malformed.
+FrameRange parse_frame_range(std::string_view text, int frames);
+
+}  // namespace raintrace::cli

@@ -1,0 +1,1 @@
+// Placeholder until compare/ has sources.

@@ -1,0 +1,65 @@
+// What the exporter needs beyond the simulated frame: image, look, fog, environment.
+// cli/ fills it from the scene file; names arriving here are already validated by cli/ AND
+// re-checked by povgen before they touch POV-Ray text (defence in depth).
+#pragma once
+
+#include <string>
+#include <glm/vec3.hpp>
+
+#include "sim/camera.h"
+
+namespace raintrace::povgen {
+
+enum class FogMode {
+  off,     ///< no fog (paper Fig. 2)
+  ground,  ///< POV-Ray ground fog (fog_type 2): cheap
+  media,   ///< scattering + absorbing media in a container (paper Fig. 3/4): Lambert-Beer
+};
+
+struct FogParams {
+  /// Default off.
+  FogMode mode = FogMode::off;
+  /// Media: thickness of the foggy slab beyond the camera, metres, in (0, 1000]. Ground fog:
+  /// the height it rises to. Default 20.
+  double depth_m = 20.0;
+  /// Extinction per metre (scattering + absorption), 1/m, in [0, 5]. Default 0.03.
+  double density_per_m = 0.03;
+  /// Linear RGB colour of the fog, each in [0, 1]. Default (0.6, 0.65, 0.7).
+  glm::dvec3 colour{0.6, 0.65, 0.7};
+};
+
+struct EnvironmentParams {
+  /// Built-in environment from templates/: "night_street", "field" or "closeup".
+  /// Default "night_street".
+  std::string name = "night_street";
+  /// A user's own POV-Ray include instead of a built-in, path relative to the scene file's
+  /// folder and inside it; empty = use `name`. Default empty.
+  std::string include_path;
+};
+
+enum class Quality {
+  preview,  ///< no antialiasing, POV-Ray +Q5: quick looks and tests
+  final,    ///< adaptive antialiasing (method 1, no jitter), +Q9
+};
+
+struct ExportParams {
+  sim::Camera camera;
+  /// Image size in pixels, each in [16, 8192]. Default 640×360.
+  int width = 640;
+  int height = 360;
+  /// Frames per second of the animation, in (0, 240]. Default 24.
+  double fps = 24.0;
+  Quality quality = Quality::preview;
+  /// Drops nearer than this are refractive spheres, farther ones streak quads, metres, >= 0.
+  /// Default 3.
+  double sphere_distance_m = 3.0;
+  /// Also write a rain mask scene per frame (rain white on black). Default false.
+  bool mask = false;
+  FogParams fog;
+  EnvironmentParams environment;
+  /// Intensity of the lightning light at full flash, relative to the environment's key light,
+  /// in [0, 100]. Default 8.
+  double lightning_light = 8.0;
+};
+
+}  // namespace raintrace::povgen

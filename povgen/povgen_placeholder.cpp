@@ -1,0 +1,1 @@
+// Placeholder until povgen/ has sources.

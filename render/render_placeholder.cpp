@@ -1,0 +1,1 @@
+// Placeholder until render/ has sources.
