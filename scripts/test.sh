@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# The README's second command (and CI's): installs what is missing, builds, and runs the whole
+# test suite: unit + POV-Ray + Slurm + browser tests, the same suite under ASan+UBSan, a bounded
+# libFuzzer run on the scene loader, and the clang-format check.
+# Usage: scripts/test.sh [--quick]   (--quick: only the normal build's ctest run)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+quick=false; [[ ${1:-} == --quick ]] && quick=true
+jobs=$(nproc)
+step() { printf '\n== %s (%s)\n' "$1" "$(date -u +%H:%M:%S)"; }
+
+step "dependencies"
+"$root/scripts/install-deps.sh" --test
+
+step "build"
+"$root/scripts/build.sh" "$root/build"
+
+step "tests"
+(cd "$root/build" && ctest --output-on-failure -j "$jobs" --timeout 900)
+$quick && exit 0
+
+step "clang-format"
+unformatted=$(cd "$root" && git ls-files '*.cpp' '*.h' | xargs -r clang-format --dry-run 2>&1 | grep -c warning || true)
+if [[ $unformatted != 0 ]]; then
+  (cd "$root" && git ls-files '*.cpp' '*.h' | xargs -r clang-format --dry-run 2>&1 | grep warning | head -20)
+  echo "clang-format: files above need formatting (clang-format -i)"; exit 1
+fi
+
+step "sanitized build (ASan + UBSan)"
+"$root/scripts/build.sh" "$root/build-asan" -DRAINTRACE_SANITIZE=ON -DRAINTRACE_BUILD_BENCH=OFF
+step "sanitized tests"
+(cd "$root/build-asan" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+  ctest --output-on-failure -j "$jobs" --timeout 1800)
+
+step "fuzzing the scene loader (60 s)"
+"$root/scripts/fuzz.sh" 60
