@@ -1,1 +1,0 @@
-// Placeholder until compare/ has sources.

@@ -1,0 +1,52 @@
+// Resume rules and span cutting.
+#include "render/frame_plan.h"
+
+#include <algorithm>
+#include <thread>
+
+namespace raintrace::render {
+
+std::vector<int> frames_needing_render(const povgen::Manifest& manifest,
+                                       const std::filesystem::path& out_dir, bool force,
+                                       const std::optional<FrameSpan>& only) {
+  std::vector<int> frames;
+  for (const auto& f : manifest.frames) {
+    if (only && (f.number < only->first || f.number > only->last)) continue;
+    std::error_code ec;
+    const bool have_image =
+        std::filesystem::is_regular_file(out_dir / final_image_name(Pass::image, f.number), ec);
+    const bool up_to_date =
+        f.status == "rendered" && !f.input_hash.empty() && f.rendered_hash == f.input_hash;
+    if (force || !up_to_date || !have_image) frames.push_back(f.number);
+  }
+  std::sort(frames.begin(), frames.end());
+  frames.erase(std::unique(frames.begin(), frames.end()), frames.end());
+  return frames;
+}
+
+std::vector<FrameSpan> split_into_spans(const std::vector<int>& frames, int jobs, int max_span) {
+  std::vector<FrameSpan> spans;
+  if (frames.empty()) return spans;
+  jobs = std::max(jobs, 1);
+  max_span = std::max(max_span, 1);
+  const int total = static_cast<int>(frames.size());
+  const int target = std::clamp((total + 2 * jobs - 1) / (2 * jobs), 1, max_span);
+  std::size_t i = 0;
+  while (i < frames.size()) {
+    FrameSpan span{frames[i], frames[i]};
+    ++i;
+    while (i < frames.size() && frames[i] == span.last + 1 && span.count() < target) {
+      span.last = frames[i];
+      ++i;
+    }
+    spans.push_back(span);
+  }
+  return spans;
+}
+
+int default_jobs() {
+  const int cores = static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+  return cores / 2 + 1;
+}
+
+}  // namespace raintrace::render

@@ -1,0 +1,55 @@
+// Renders an exported output folder on this machine: reads manifest.json, renders the frames
+// that are missing or stale, and records each result in manifest.json as it lands, so an
+// interrupted run resumes where it stopped.
+#pragma once
+
+#include <atomic>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "render/povray_runner.h"
+
+namespace raintrace::render {
+
+struct RenderProgress {
+  int total = 0;  ///< frames (and masks) to render in this run
+  int done = 0;   ///< rendered so far in this run
+  int failed = 0;
+  int skipped = 0;  ///< already up to date before the run
+  double elapsed_seconds = 0.0;
+  /// Estimated seconds left from the rate so far; negative while unknown.
+  double eta_seconds = -1.0;
+};
+
+struct LocalRenderSettings {
+  int jobs = 2;        ///< POV-Ray processes in flight, >= 1
+  int max_span = 12;   ///< most frames one POV-Ray process renders
+  bool force = false;  ///< re-render frames that are up to date
+  bool mask = false;   ///< also render masks/frame_NNNN.png (scene.ini + RaintraceMask=1)
+  std::optional<FrameSpan> only;  ///< restrict to these frames
+  const std::atomic<bool>* stop = nullptr;
+  std::function<void(const RenderProgress&)> on_progress;  ///< ~10×/s and on every frame
+  std::function<void(const FrameFailure&)> on_failed;
+};
+
+struct RenderSummary {
+  RenderProgress progress;
+  std::vector<FrameFailure> failures;
+  bool interrupted = false;
+};
+
+/// Throws std::runtime_error when POV-Ray is not installed (one line, with the apt command) or
+/// the folder has no readable manifest.json.
+RenderSummary render_local(const std::filesystem::path& out_dir,
+                           const LocalRenderSettings& settings);
+
+/// Throws the "POV-Ray not found" error unless `povray` is in PATH.
+void require_povray();
+
+/// Removes images/.tmp and masks/.tmp: whatever is there was left by a killed run and is
+/// never trusted.
+void clean_temp_images(const std::filesystem::path& out_dir);
+
+}  // namespace raintrace::render

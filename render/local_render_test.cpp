@@ -1,0 +1,116 @@
+// End-to-end renders of tiny hand-made folders with the real POV-Ray (label povray).
+#include "render/local_render.h"
+
+#include <gtest/gtest.h>
+
+#include "povgen/manifest.h"
+#include "render/image_check.h"
+#include "render/process.h"
+#include "render/test_folder.h"
+
+namespace raintrace::render {
+namespace {
+
+LocalRenderSettings settings(int jobs, int max_span = 12, bool force = false) {
+  LocalRenderSettings s;
+  s.jobs = jobs;
+  s.max_span = max_span;
+  s.force = force;
+  return s;
+}
+
+class PovrayLocalRender : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!find_program("povray")) GTEST_SKIP() << "POV-Ray not installed (apt-get install povray)";
+  }
+};
+
+TEST_F(PovrayLocalRender, RendersEveryFrameToAValidImageAndRecordsItInTheManifest) {
+  const auto dir = testing::fresh_test_dir("all");
+  testing::write_test_folder(dir, {.frames = 6});
+  const auto summary = render_local(dir, settings(2));
+  EXPECT_FALSE(summary.interrupted);
+  EXPECT_TRUE(summary.failures.empty());
+  EXPECT_EQ(summary.progress.done, 6);
+  const auto manifest = povgen::read_manifest(dir / "manifest.json");
+  for (const auto& f : manifest.frames) {
+    EXPECT_TRUE(image_is_complete(dir / f.image, 64, 36)) << f.image;
+    EXPECT_EQ(f.status, "rendered");
+    EXPECT_EQ(f.rendered_hash, f.input_hash);
+  }
+  // Nothing is left at a temp name.
+  EXPECT_TRUE(std::filesystem::is_empty(dir / "images/.tmp"));
+}
+
+TEST_F(PovrayLocalRender, RerunRendersOnlyFramesWhoseInputsChanged) {
+  const auto dir = testing::fresh_test_dir("resume");
+  testing::write_test_folder(dir, {.frames = 4});
+  ASSERT_EQ(render_local(dir, settings(2)).progress.done, 4);
+  const auto before = std::filesystem::last_write_time(dir / "images/frame_0001.png");
+  // Frame 3's inputs change: only it is redone.
+  testing::replace_frame(dir, 3, "#include \"scene.inc\"\nsphere { 0, 1 pigment { rgb 1 } }\n");
+  const auto summary = render_local(dir, settings(2));
+  EXPECT_EQ(summary.progress.total, 1);
+  EXPECT_EQ(summary.progress.skipped, 3);
+  EXPECT_EQ(std::filesystem::last_write_time(dir / "images/frame_0001.png"), before);
+  EXPECT_EQ(render_local(dir, settings(2)).progress.total, 0);
+  EXPECT_EQ(render_local(dir, settings(2, 12, true)).progress.total, 4);
+}
+
+TEST_F(PovrayLocalRender, AFrameThatFailsIsReportedWithPovrayErrorAndTheOthersFinish) {
+  const auto dir = testing::fresh_test_dir("fail");
+  testing::write_test_folder(dir, {.frames = 6});
+  testing::replace_frame(dir, 3, "#include \"scene.inc\"\nsphere { <0,0,0> oops }\n");
+  // One job, 6 frames: spans of ceil(6 / 2) = 3 → frame 3 fails at the end of span 1-3. With
+  // max_span 2 the spans are 1-2, 3-4, 5-6: frame 3 fails first in its span and 4 is re-queued.
+  for (int max_span : {3, 2}) {
+    std::filesystem::remove_all(dir / "images");
+    const auto summary = render_local(dir, settings(1, max_span, true));
+    ASSERT_EQ(summary.failures.size(), 1U) << "max_span " << max_span;
+    const auto& failure = summary.failures[0];
+    EXPECT_EQ(failure.frame, 3);
+    EXPECT_EQ(failure.exit_code, 1);  // POV-Ray exits 1 on a parse error (POVRAY-NOTES)
+    ASSERT_FALSE(failure.error_lines.empty());
+    EXPECT_EQ(failure.error_lines[0].rfind("File 'frames/frame_0003.pov' line 2: Parse Error", 0),
+              0U)
+        << failure.error_lines[0];
+    EXPECT_NE(failure.command.find("povray scene.ini"), std::string::npos);
+    EXPECT_EQ(summary.progress.done, 5);
+    EXPECT_EQ(summary.progress.failed, 1);
+    const auto manifest = povgen::read_manifest(dir / "manifest.json");
+    EXPECT_EQ(manifest.frames[2].status, "failed");
+    EXPECT_NE(manifest.frames[2].error.find("Parse Error"), std::string::npos);
+    for (int f : {1, 2, 4, 5, 6}) {
+      EXPECT_TRUE(image_is_complete(dir / final_image_name(Pass::image, f), 64, 36)) << f;
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / final_image_name(Pass::image, 3)));
+  }
+}
+
+TEST_F(PovrayLocalRender, StopFlagKeepsFinishedFramesAndTheRerunCompletes) {
+  const auto dir = testing::fresh_test_dir("stop");
+  testing::write_test_folder(dir, {.frames = 8, .spheres = 3000});
+  std::atomic<bool> stop{false};
+  int seen = 0;
+  auto stopping = settings(1, 8);
+  stopping.stop = &stop;
+  stopping.on_progress = [&](const RenderProgress& p) {
+    seen = p.done;
+    if (p.done >= 2) stop = true;
+  };
+  const auto first = render_local(dir, stopping);
+  EXPECT_TRUE(first.interrupted);
+  EXPECT_TRUE(first.failures.empty());  // an interruption is not a failure
+  ASSERT_GE(seen, 2);
+  ASSERT_LT(first.progress.done, 8);
+  const auto second = render_local(dir, settings(2));
+  EXPECT_EQ(second.progress.total, 8 - first.progress.done);
+  EXPECT_EQ(second.progress.done + first.progress.done, 8);
+  for (int f = 1; f <= 8; ++f) {
+    EXPECT_TRUE(image_is_complete(dir / final_image_name(Pass::image, f), 64, 36)) << f;
+  }
+}
+
+}  // namespace
+}  // namespace raintrace::render

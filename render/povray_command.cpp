@@ -1,0 +1,72 @@
+// POV-Ray command lines and log reading. Facts behind the flags are in shared/POVRAY-NOTES.md.
+#include "render/povray_command.h"
+
+#include <fmt/core.h>
+#include <fstream>
+#include <sstream>
+
+namespace raintrace::render {
+
+std::string final_image_name(Pass pass, int frame) {
+  return fmt::format("{}/frame_{:04d}.png", pass == Pass::image ? "images" : "masks", frame);
+}
+
+std::string temp_dir_name(Pass pass) { return pass == Pass::image ? "images/.tmp" : "masks/.tmp"; }
+
+std::string temp_image_name(Pass pass, int frame) {
+  return fmt::format("{}/frame_{:04d}.png", temp_dir_name(pass), frame);
+}
+
+std::vector<std::string> povray_argv(Pass pass, const FrameSpan& span) {
+  std::vector<std::string> argv{"povray", "scene.ini"};
+  if (pass == Pass::mask) argv.emplace_back("Declare=RaintraceMask=1");
+  // POV-Ray appends the frame number (padded to Final_Frame's digits) before the extension.
+  argv.insert(argv.end(),
+              {"-D", "+FN", "-V", "-GR", "+L.", "+O" + temp_dir_name(pass) + "/frame_.png", "+KFI1",
+               "+KFF9999", fmt::format("+SF{}", span.first), fmt::format("+EF{}", span.last)});
+  return argv;
+}
+
+std::map<std::string, std::string> povray_env(const std::filesystem::path& out_dir) {
+  return {{"HOME", std::filesystem::absolute(out_dir).string()}};
+}
+
+void prepare_povray_home(const std::filesystem::path& out_dir) {
+  const auto dir = out_dir / ".povray" / "3.7";
+  std::filesystem::create_directories(dir);
+  const auto conf = dir / "povray.conf";
+  if (!std::filesystem::exists(conf)) std::ofstream{conf};
+}
+
+std::vector<std::string> povray_error_lines(const std::string& log_text) {
+  std::vector<std::string> lines;
+  std::istringstream in{log_text};
+  std::string line;
+  bool in_message = false;
+  while (std::getline(in, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    // POV-Ray wraps messages at ~80 columns; continuation lines start with one space.
+    if (in_message && line.size() > 1 && line[0] == ' ' && line[1] != ' ') {
+      lines.back() += line;
+      continue;
+    }
+    in_message = false;
+    // Warnings ("Possible Parse Error: …", "File '…' line N: Parse Warning: …") from frames that
+    // rendered fine earlier in the same log are not the failure.
+    if (line.find("Possible ") != std::string::npos || line.find("Warning") != std::string::npos) {
+      continue;
+    }
+    if (line.rfind("File '", 0) == 0 && line.find(" line ") != std::string::npos) {
+      lines.push_back(line);
+      in_message = true;
+    } else if (line.find("Parse Error") != std::string::npos ||
+               line.find("Fatal error") != std::string::npos ||
+               line.rfind("Render failed", 0) == 0 || line.rfind("Error:", 0) == 0) {
+      lines.push_back(line);
+      in_message = true;
+    }
+  }
+  return lines;
+}
+
+}  // namespace raintrace::render

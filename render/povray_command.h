@@ -1,0 +1,50 @@
+// How raintrace calls POV-Ray on an exported folder: the command line for one range of frames
+// (pure, so tests can check it without POV-Ray) and the folder conventions it relies on.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace raintrace::render {
+
+/// A contiguous run of frames rendered by one POV-Ray process (1-based, inclusive).
+struct FrameSpan {
+  int first = 1;
+  int last = 1;
+  int count() const { return last - first + 1; }
+};
+
+/// The scene variant a process renders.
+enum class Pass {
+  image,  ///< scene.ini → images/frame_NNNN.png
+  mask,   ///< scene.ini with Declare=RaintraceMask=1 → masks/frame_NNNN.png
+};
+
+/// Where a frame's finished image lives, relative to the output folder:
+/// "images/frame_0007.png" or "masks/frame_0007.png".
+std::string final_image_name(Pass pass, int frame);
+/// Where POV-Ray writes it first ("images/.tmp/frame_0007.png"); renamed only once verified.
+std::string temp_image_name(Pass pass, int frame);
+/// The folder of temp_image_name, relative to the output folder.
+std::string temp_dir_name(Pass pass);
+
+/// argv for `povray` rendering `span` of the folder's animation. Runs with the output folder as
+/// working directory (relative includes resolve there, +L. adds it to the library path):
+///   povray scene.ini -D +FN -V -GR +L. +Oimages/.tmp/frame_.png +KFI1 +KFF9999 +SFa +EFb
+/// -D: headless; -V -GR: quiet but keeps POV-Ray's "File '…' line N:" error lines (POVRAY-NOTES);
+/// +KFI1 +KFF9999 keep clock and 4-digit names identical to scene.ini's whole animation.
+std::vector<std::string> povray_argv(Pass pass, const FrameSpan& span);
+
+/// Environment for POV-Ray: HOME = out_dir, where prepare_povray_home() put an empty
+/// .povray/3.7/povray.conf (silences the harmless "cannot open user configuration" warning).
+std::map<std::string, std::string> povray_env(const std::filesystem::path& out_dir);
+void prepare_povray_home(const std::filesystem::path& out_dir);
+
+/// The lines of a POV-Ray log that explain a failure: each "File '…' line N: …" message joined
+/// with its wrapped continuation lines, then any other error lines ("Fatal error…",
+/// "Render failed", "Parse Error…"). Empty when the log names no error.
+std::vector<std::string> povray_error_lines(const std::string& log_text);
+
+}  // namespace raintrace::render

@@ -1,0 +1,58 @@
+// POV-Ray command lines, file names and error-line extraction.
+#include "render/povray_command.h"
+
+#include <gtest/gtest.h>
+
+namespace raintrace::render {
+namespace {
+
+TEST(PovArgv, RendersASpanOfTheWholeAnimationHeadlessIntoTheTempFolder) {
+  const auto argv = povray_argv(Pass::image, {9, 16});
+  const std::vector<std::string> expected{"povray", "scene.ini", "-D",   "+FN",
+                                          "-V",     "-GR",       "+L.",  "+Oimages/.tmp/frame_.png",
+                                          "+KFI1",  "+KFF9999",  "+SF9", "+EF16"};
+  EXPECT_EQ(argv, expected);
+}
+
+TEST(PovArgv, MaskPassDeclaresTheMaskSwitchAndWritesToMasks) {
+  const auto argv = povray_argv(Pass::mask, {1, 1});
+  EXPECT_NE(std::find(argv.begin(), argv.end(), "Declare=RaintraceMask=1"), argv.end());
+  EXPECT_NE(std::find(argv.begin(), argv.end(), "+Omasks/.tmp/frame_.png"), argv.end());
+}
+
+TEST(ImageNames, AreFourDigitLikeScenesFinalFrame9999) {
+  EXPECT_EQ(final_image_name(Pass::image, 7), "images/frame_0007.png");
+  EXPECT_EQ(temp_image_name(Pass::image, 12), "images/.tmp/frame_0012.png");
+  EXPECT_EQ(final_image_name(Pass::mask, 123), "masks/frame_0123.png");
+}
+
+// Verbatim tail of a POV-Ray 3.7.0.10 log (-V -GR) whose frame 3 had a bad token.
+constexpr const char* kParseErrorLog =
+    "  Trace Time:       0 hours  0 minutes  0 seconds (0.002 seconds)\n"
+    "Possible Parse Error: assumed_gamma not specified in this POV-Ray 3.7 or later\n"
+    " scene. Future versions of POV-Ray may consider this a fatal error.\n"
+    "Rendering frame 2 of 3\n"
+    "==== [Parsing...] ==========================================================\n"
+    "\n"
+    "File 'frames/frame_0003.pov' line 4: Parse Error: Expected 'numeric expression',\n"
+    " undeclared identifier 'oops' found instead\n"
+    "Fatal error in parser: Cannot parse input.\n"
+    "Render failed\n";
+
+TEST(PovErrorLines, JoinsTheWrappedLocationLineAndKeepsTheVerdict) {
+  const auto lines = povray_error_lines(kParseErrorLog);
+  ASSERT_EQ(lines.size(), 3U);
+  EXPECT_EQ(lines[0],
+            "File 'frames/frame_0003.pov' line 4: Parse Error: Expected 'numeric expression', "
+            "undeclared identifier 'oops' found instead");
+  EXPECT_EQ(lines[1], "Fatal error in parser: Cannot parse input.");
+  EXPECT_EQ(lines[2], "Render failed");
+}
+
+TEST(PovErrorLines, StatisticsAloneAreNoError) {
+  EXPECT_TRUE(
+      povray_error_lines("  Parse Time: 0 hours\n  Trace Time: 1 s\nPOV-Ray finished\n").empty());
+}
+
+}  // namespace
+}  // namespace raintrace::render

@@ -1,0 +1,169 @@
+// The scheduler. One rule keeps it safe: an image reaches its final name only after it decodes
+// completely at the expected size, so a killed POV-Ray (or raintrace) never leaves a final-
+// looking image that is half written. Files in the temp folders carry no meaning across runs.
+#include "render/povray_runner.h"
+
+#include <fmt/core.h>
+#include <chrono>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <thread>
+
+#include "render/image_check.h"
+#include "render/process.h"
+
+namespace raintrace::render {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Running {
+  RenderJob job;
+  std::unique_ptr<ChildProcess> process;
+  std::vector<std::string> argv;
+  std::string log;          // relative to out_dir
+  int next_frame = 0;       // first frame of the span not yet promoted
+  Clock::time_point since;  // start of next_frame's work (process start or last promotion)
+};
+
+std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in{path, std::ios::binary};
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+double seconds_since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+class Runner {
+ public:
+  Runner(const std::filesystem::path& out_dir, const RunnerSettings& settings,
+         const RunnerCallbacks& callbacks)
+      : m_out{out_dir}, m_settings{settings}, m_callbacks{callbacks} {}
+
+  bool run(std::deque<RenderJob> queue) {
+    std::filesystem::create_directories(m_out / "logs");
+    prepare_povray_home(m_out);
+    std::vector<Running> running;
+    while (!queue.empty() || !running.empty()) {
+      if (stop_requested()) {
+        for (auto& r : running) {
+          r.process->stop();
+          promote_ready(r);
+        }
+        return false;
+      }
+      while (static_cast<int>(running.size()) < std::max(1, m_settings.jobs) && !queue.empty()) {
+        running.push_back(start(queue.front()));
+        queue.pop_front();
+      }
+      bool any_ended = false;
+      for (auto it = running.begin(); it != running.end();) {
+        promote_ready(*it);
+        if (const auto code = it->process->poll()) {
+          finish(*it, *code, queue);
+          it = running.erase(it);
+          any_ended = true;
+        } else {
+          ++it;
+        }
+      }
+      if (m_callbacks.on_tick) m_callbacks.on_tick();
+      if (!any_ended) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    return !stop_requested();
+  }
+
+ private:
+  bool stop_requested() const { return m_settings.stop != nullptr && m_settings.stop->load(); }
+
+  Running start(const RenderJob& job) {
+    Running r;
+    r.job = job;
+    r.argv = povray_argv(job.pass, job.span);
+    r.log = fmt::format("logs/{}_{:04d}-{:04d}.log", job.pass == Pass::image ? "image" : "mask",
+                        job.span.first, job.span.last);
+    r.next_frame = job.span.first;
+    std::filesystem::create_directories(m_out / temp_dir_name(job.pass));
+    // A leftover temp image of a frame about to render must never be mistaken for new output.
+    for (int f = job.span.first; f <= job.span.last; ++f) {
+      std::filesystem::remove(m_out / temp_image_name(job.pass, f));
+    }
+    ProcessSpec spec;
+    spec.argv = r.argv;
+    spec.working_dir = m_out;
+    spec.env = povray_env(m_out);
+    spec.log_path = m_out / r.log;
+    r.since = Clock::now();
+    r.process = std::make_unique<ChildProcess>(spec);
+    return r;
+  }
+
+  // Promotes consecutive finished frames from next_frame on. POV-Ray writes a frame's PNG in one
+  // go after tracing it, so "decodes completely" means "finished".
+  void promote_ready(Running& r) {
+    while (r.next_frame <= r.job.span.last) {
+      const auto temp = m_out / temp_image_name(r.job.pass, r.next_frame);
+      if (!image_is_complete(temp, m_settings.width, m_settings.height)) return;
+      const auto final_path = m_out / final_image_name(r.job.pass, r.next_frame);
+      std::filesystem::create_directories(final_path.parent_path());
+      std::filesystem::rename(temp, final_path);
+      const double seconds = seconds_since(r.since);
+      r.since = Clock::now();
+      if (m_callbacks.on_rendered) m_callbacks.on_rendered(r.job.pass, r.next_frame, seconds);
+      ++r.next_frame;
+    }
+  }
+
+  void finish(Running& r, int exit_code, std::deque<RenderJob>& queue) {
+    promote_ready(r);
+    if (r.next_frame > r.job.span.last) return;
+    if (stop_requested()) return;  // interrupted, not failed: the next run redoes the rest
+    FrameFailure failure;
+    failure.frame = r.next_frame;
+    failure.pass = r.job.pass;
+    failure.command =
+        "cd " + shell_quote_command({m_out.string()}) + " && HOME=. " + shell_quote_command(r.argv);
+    failure.exit_code = exit_code;
+    failure.log = r.log;
+    failure.error_lines = povray_error_lines(read_text(m_out / r.log));
+    if (failure.error_lines.empty()) {
+      std::string why;
+      image_is_complete(m_out / temp_image_name(r.job.pass, r.next_frame), m_settings.width,
+                        m_settings.height, &why);
+      failure.error_lines.push_back(
+          fmt::format("{}: {}", temp_image_name(r.job.pass, r.next_frame), why));
+    }
+    if (m_callbacks.on_failed) m_callbacks.on_failed(failure);
+    // The frames after the failed one were never reached: they get their own process, ahead of
+    // the queue so the frame order stays roughly sequential.
+    if (r.next_frame < r.job.span.last) {
+      queue.push_front({r.job.pass, {r.next_frame + 1, r.job.span.last}});
+    }
+  }
+
+  std::filesystem::path m_out;
+  RunnerSettings m_settings;
+  RunnerCallbacks m_callbacks;
+};
+
+}  // namespace
+
+std::string FrameFailure::summary() const {
+  std::string out;
+  for (const auto& line : error_lines) {
+    if (!out.empty()) out += " | ";
+    out += line;
+  }
+  return out;
+}
+
+bool run_povray_jobs(const std::filesystem::path& out_dir, std::deque<RenderJob> jobs,
+                     const RunnerSettings& settings, const RunnerCallbacks& callbacks) {
+  return Runner{out_dir, settings, callbacks}.run(std::move(jobs));
+}
+
+}  // namespace raintrace::render

@@ -1,0 +1,56 @@
+// Runs POV-Ray over spans of frames with several processes in flight, verifies and promotes
+// each finished image (temp name → final name), and reports per frame. The same engine serves
+// the local backend (many spans, N jobs) and a Slurm task (its own spans, one job).
+#pragma once
+
+#include <atomic>
+#include <deque>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "render/povray_command.h"
+
+namespace raintrace::render {
+
+struct RenderJob {
+  Pass pass = Pass::image;
+  FrameSpan span;
+};
+
+/// A frame POV-Ray did not produce.
+struct FrameFailure {
+  int frame = 0;
+  Pass pass = Pass::image;
+  std::string command;                   ///< the POV-Ray command line, with its working directory
+  int exit_code = 0;                     ///< POV-Ray's exit code (128 + signal when killed)
+  std::vector<std::string> error_lines;  ///< POV-Ray's own error lines from the log
+  std::string log;                       ///< the log file, relative to the output folder
+  /// One line: the error lines joined, or why the image was rejected.
+  std::string summary() const;
+};
+
+struct RunnerCallbacks {
+  /// A verified image is now at final_image_name(pass, frame).
+  std::function<void(Pass pass, int frame, double seconds)> on_rendered;
+  std::function<void(const FrameFailure&)> on_failed;
+  /// Called about every 100 ms while waiting, for progress displays.
+  std::function<void()> on_tick;
+};
+
+struct RunnerSettings {
+  int jobs = 2;   ///< POV-Ray processes in flight, >= 1
+  int width = 0;  ///< expected image size (from the manifest)
+  int height = 0;
+  /// Set from a signal handler: children are stopped, finished images kept.
+  const std::atomic<bool>* stop = nullptr;
+};
+
+/// Renders every job; returns false when stopped by settings.stop (finished frames are promoted
+/// and reported first). A span whose process fails at frame f reports f and goes on with
+/// f+1..last in a new process. Logs go to out_dir/logs/<pass>_AAAA-BBBB.log.
+bool run_povray_jobs(const std::filesystem::path& out_dir, std::deque<RenderJob> jobs,
+                     const RunnerSettings& settings, const RunnerCallbacks& callbacks);
+
+}  // namespace raintrace::render

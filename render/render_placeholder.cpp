@@ -1,1 +1,0 @@
-// Placeholder until render/ has sources.

@@ -1,0 +1,88 @@
+// The scene.ini / dispatcher mirror what the exporter writes: Final_Frame=9999 so POV-Ray names
+// images with 4 digits, and scene.pov includes frames/frame_NNNN.pov by frame_number.
+#include "render/test_folder.h"
+
+#include <fmt/core.h>
+#include <unistd.h>
+#include <fstream>
+#include <sstream>
+
+#include "povgen/manifest.h"
+
+namespace raintrace::render::testing {
+namespace {
+
+void write_file(const std::filesystem::path& path, const std::string& text) {
+  std::filesystem::create_directories(path.parent_path());
+  std::ofstream out{path, std::ios::binary};
+  out << text;
+}
+
+std::string frame_text(int frame, int spheres) {
+  std::string s = "#include \"scene.inc\"\nunion {\n";
+  for (int k = 0; k < spheres; ++k) {
+    // A fixed pseudo-random cloud that moves with the frame number.
+    const double x = ((k * 37) % 100) / 25.0 - 2.0 + 0.05 * frame;
+    const double y = ((k * 53) % 80) / 25.0 - 1.6;
+    const double z = ((k * 71) % 60) / 20.0;
+    s += fmt::format("  sphere {{ <{},{},{}>, 0.04 }}\n", x, y, z);
+  }
+  s += fmt::format("  pigment {{ rgb <0.2,{},0.9> }}\n}}\n", 0.1 + 0.8 * (frame % 10) / 10.0);
+  return s;
+}
+
+}  // namespace
+
+void write_test_folder(const std::filesystem::path& dir, const TestFolderSpec& spec) {
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "frames");
+  write_file(dir / "scene.ini", fmt::format("Input_File_Name=scene.pov\nInitial_Frame=1\n"
+                                            "Final_Frame=9999\nInitial_Clock=0\nFinal_Clock=1\n"
+                                            "Width={}\nHeight={}\nAntialias=off\nQuality=5\n",
+                                            spec.width, spec.height));
+  write_file(dir / "scene.pov",
+             "#version 3.7;\n#include concat(\"frames/frame_\", str(frame_number, -4, 0), "
+             "\".pov\")\n");
+  write_file(dir / "scene.inc",
+             "global_settings { assumed_gamma 1.0 }\n"
+             "camera { location <0,0,-5> look_at <0,0,0> }\n"
+             "light_source { <5,5,-5> rgb 1 }\nbackground { rgb 0.05 }\n"
+             "#ifdef (RaintraceMask) #default { finish { ambient 1 diffuse 0 } } #end\n");
+  povgen::Manifest manifest;
+  manifest.raintrace_version = "test";
+  manifest.width = spec.width;
+  manifest.height = spec.height;
+  manifest.fps = 24;
+  manifest.quality = "preview";
+  for (int f = 1; f <= spec.frames; ++f) {
+    const std::string text = frame_text(f, spec.spheres);
+    povgen::FrameEntry entry;
+    entry.number = f;
+    entry.scene = fmt::format("frames/frame_{:04d}.pov", f);
+    entry.image = fmt::format("images/frame_{:04d}.png", f);
+    entry.input_hash = povgen::content_hash(text);
+    write_file(dir / entry.scene, text);
+    manifest.frames.push_back(entry);
+  }
+  povgen::write_manifest(dir / "manifest.json", manifest);
+}
+
+void replace_frame(const std::filesystem::path& dir, int frame, const std::string& text) {
+  auto manifest = povgen::read_manifest(dir / "manifest.json");
+  for (auto& entry : manifest.frames) {
+    if (entry.number != frame) continue;
+    write_file(dir / entry.scene, text);
+    entry.input_hash = povgen::content_hash(text);
+  }
+  povgen::write_manifest(dir / "manifest.json", manifest);
+}
+
+std::filesystem::path fresh_test_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   fmt::format("raintrace_render_test_{}_{}", name, ::getpid());
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+}  // namespace raintrace::render::testing

@@ -1,0 +1,27 @@
+// Test helper: writes a tiny hand-made output folder in the layout of shared/DESIGN.md
+// (scene.ini, scene.pov dispatcher, frames/frame_NNNN.pov, manifest.json), so render/ can be
+// tested without the simulator or the exporter.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace raintrace::render::testing {
+
+struct TestFolderSpec {
+  int frames = 6;
+  int width = 64;
+  int height = 36;
+  int spheres = 200;  ///< per frame; more makes each frame slower to parse and trace
+};
+
+/// Creates (replacing) dir with the folder; each frame is a different, deterministic scene.
+void write_test_folder(const std::filesystem::path& dir, const TestFolderSpec& spec = {});
+
+/// Rewrites one frame's .pov with `text` and updates its input_hash in manifest.json.
+void replace_frame(const std::filesystem::path& dir, int frame, const std::string& text);
+
+/// A fresh empty folder under the system temp dir, named after the running test.
+std::filesystem::path fresh_test_dir(const std::string& name);
+
+}  // namespace raintrace::render::testing
