@@ -21,8 +21,11 @@ class SceneError : public std::runtime_error {
 struct Scene {
   std::filesystem::path source;  ///< the scene file (or the name given to load_scene_string)
   std::string text;              ///< the file's bytes, for hashing into manifest.json
-  int frames = 48;               ///< [output] frames, in [1, 100000]
-  sim::SimParams sim;            ///< camera is filled identically in sim and look
+  /// Folder that look.environment.include_path is relative to: the scene file's folder (or the
+  /// base_dir given to load_scene_string). Added by the cli owner.
+  std::filesystem::path base_dir;
+  int frames = 48;     ///< [output] frames, in [1, 100000]
+  sim::SimParams sim;  ///< camera is filled identically in sim and look
   povgen::ExportParams look;
 };
 
