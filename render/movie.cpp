@@ -1,0 +1,77 @@
+// ffmpeg invocations. Frames are numbered images/frame_NNNN.png; -start_number lets a run that
+// rendered only --frames A-B still make a movie of what exists from A on.
+#include "render/movie.h"
+
+#include <fmt/core.h>
+
+#include "render/process.h"
+
+namespace raintrace::render {
+namespace {
+
+std::vector<std::string> input_args(double fps, int first_frame) {
+  return {"ffmpeg",
+          "-hide_banner",
+          "-loglevel",
+          "error",
+          "-y",
+          "-framerate",
+          fmt::format("{}", fps),
+          "-start_number",
+          std::to_string(first_frame),
+          "-i",
+          "images/frame_%04d.png"};
+}
+
+}  // namespace
+
+std::vector<std::string> mp4_argv(double fps, int first_frame, const std::string& output) {
+  auto argv = input_args(fps, first_frame);
+  // libx264 with yuv420p needs even width and height: round down by at most one pixel.
+  argv.insert(argv.end(),
+              {"-vf", "scale=trunc(iw/2)*2:trunc(ih/2)*2", "-c:v", "libx264", "-pix_fmt", "yuv420p",
+               "-crf", "18", "-movflags", "+faststart", "-f", "mp4", output});
+  return argv;
+}
+
+std::vector<std::string> gif_argv(double fps, int first_frame, const std::string& output) {
+  auto argv = input_args(fps, first_frame);
+  argv.insert(argv.end(), {"-filter_complex",
+                           "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither="
+                           "bayer:bayer_scale=3",
+                           "-loop", "0", "-f", "gif", output});
+  return argv;
+}
+
+MovieResult make_movies(const std::filesystem::path& out_dir, double fps, int first_frame) {
+  MovieResult result;
+  if (!find_program("ffmpeg")) {
+    result.warning =
+        "ffmpeg not found: no MP4/GIF made (install it with `sudo apt-get install ffmpeg`)";
+    return result;
+  }
+  std::filesystem::create_directories(out_dir / "logs");
+  auto run = [&](const std::vector<std::string>& argv, const std::string& name,
+                 std::filesystem::path& made) {
+    ProcessSpec spec;
+    spec.argv = argv;
+    spec.working_dir = out_dir;
+    spec.log_path = out_dir / "logs" / (name + ".ffmpeg.log");
+    const int code = ChildProcess{spec}.wait();
+    const auto temp = out_dir / (".tmp." + name);
+    if (code == 0 && std::filesystem::exists(temp)) {
+      std::filesystem::rename(temp, out_dir / name);
+      made = out_dir / name;
+    } else {
+      std::filesystem::remove(temp);
+      if (!result.warning.empty()) result.warning += "; ";
+      result.warning += fmt::format(
+          "ffmpeg failed making {} (exit code {}, see logs/{}.ffmpeg.log)", name, code, name);
+    }
+  };
+  run(mp4_argv(fps, first_frame, ".tmp.animation.mp4"), "animation.mp4", result.mp4);
+  run(gif_argv(fps, first_frame, ".tmp.animation.gif"), "animation.gif", result.gif);
+  return result;
+}
+
+}  // namespace raintrace::render

@@ -1,0 +1,27 @@
+// The finished frames as an MP4 (H.264, yuv420p, even size: plays everywhere) and an animated
+// GIF (two-pass palette so rain streaks do not dither into noise), both made by ffmpeg.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace raintrace::render {
+
+/// ffmpeg argv for the MP4 of images/frame_%04d.png from first_frame on, written to output.
+std::vector<std::string> mp4_argv(double fps, int first_frame, const std::string& output);
+/// ffmpeg argv for the GIF (palettegen + paletteuse in one filter graph).
+std::vector<std::string> gif_argv(double fps, int first_frame, const std::string& output);
+
+struct MovieResult {
+  std::filesystem::path mp4;  ///< empty when not made
+  std::filesystem::path gif;
+  std::string warning;  ///< why something was not made (ffmpeg missing or failed)
+};
+
+/// Makes out_dir/animation.mp4 and out_dir/animation.gif from the frames, each through a temp
+/// name renamed on success. Never throws for a missing or failing ffmpeg: that is a warning,
+/// the frames are the result that matters.
+MovieResult make_movies(const std::filesystem::path& out_dir, double fps, int first_frame);
+
+}  // namespace raintrace::render
