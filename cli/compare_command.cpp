@@ -1,14 +1,101 @@
-// Placeholder: `raintrace compare` until its owner lands it.
+// `raintrace compare A B`: compares two images or two folders of frames (A the reference, B the
+// candidate) with idiff's threshold rules, prints a table, optionally writes JSON, an HTML
+// report and difference images; exit 0 all pass (warnings included), 1 any fail or missing
+// frame, 2 unusable input (main turns the thrown error into the message and code 2).
+#include <fmt/core.h>
 #include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
 #include <stdexcept>
+#include <string>
 
 #include "cli/command.h"
+#include "cli/exit_codes.h"
+#include "compare/compare_run.h"
+#include "compare/report_html.h"
+#include "compare/report_json.h"
+#include "compare/report_table.h"
 
 namespace raintrace::cli {
 
+namespace {
+
+struct CompareArgs {
+  std::string a, b, json, html, diff;
+  compare::Thresholds thresholds;
+  int threads = 2;
+};
+
+constexpr const char* kFooter = R"(
+Thresholds follow OpenImageIO's idiff (ImageBufAlgo::compare). Values are per channel of each
+pixel, normalised to [0, 1] (8-bit: 1/255 = 0.0039); alpha is compared like any channel. A value
+fails when |A-B| > --fail and |A-B| > --fail-relative * (|A|+|B|)/2; a pixel fails when any
+channel fails. An image FAILS when more than --fail-percent % of its pixels fail or any error
+exceeds --hard-fail; else it WARNS by the same rule with the --warn options; else it PASSes.
+Defaults as idiff: --fail 1e-6 --warn 1e-6, percentages 0, relative 0, hard limits infinite.
+Metrics: mean/max absolute error, RMSE, PSNR = 20 log10(1/RMSE), SSIM of Rec.709 luminance
+(Wang et al. 2004: 11x11 Gaussian window sigma 1.5, C1=(0.01)^2, C2=(0.03)^2, L=1).
+Folders are matched by file name; a frame on one side only counts as a failure.
+Exit codes: 0 all pass or warn, 1 any fail or missing frame, 2 unusable input.
+Example: raintrace compare tests/reference/default out/default/images --fail 0.02 --fail-percent 1)";
+
+int run_compare(const CompareArgs& args) {
+  compare::CompareOptions options;
+  options.thresholds = args.thresholds;
+  options.threads = args.threads;
+  options.diff_dir = args.diff;
+  if (!args.html.empty()) options.assets_dir = compare::html_assets_dir(args.html);
+  const compare::CompareReport report = compare::compare_paths(args.a, args.b, options);
+
+  fmt::print("{}", compare::format_table(report));
+  std::fflush(stdout);
+  if (!args.json.empty()) compare::write_json(args.json, report);
+  if (!args.html.empty()) compare::write_html(args.html, report);
+
+  for (const auto& frame : report.frames) {
+    if (frame.status == compare::FrameStatus::error) throw std::runtime_error(frame.error);
+  }
+  return report.any_failed() ? exit_code::failed : exit_code::ok;
+}
+
+}  // namespace
+
 Command register_compare_command(CLI::App& app) {
-  auto* sub = app.add_subcommand("compare", "(not available yet)");
-  return {sub, [] () -> int { throw std::runtime_error("'compare' is not available yet"); }};
+  auto args = std::make_shared<CompareArgs>();
+  auto* sub = app.add_subcommand(
+      "compare", "Compare two images or two folders of frames (A reference, B candidate)");
+  sub->footer(kFooter);
+  sub->add_option("A", args->a, "Reference image or folder")->required();
+  sub->add_option("B", args->b, "Candidate image or folder")->required();
+  auto& t = args->thresholds;
+  sub->add_option("--fail", t.fail, "Per-channel absolute failure threshold (default 1e-6)")
+      ->check(CLI::NonNegativeNumber);
+  sub->add_option("--warn", t.warn, "Per-channel absolute warning threshold (default 1e-6)")
+      ->check(CLI::NonNegativeNumber);
+  sub->add_option("--fail-percent", t.fail_percent,
+                  "Percentage of pixels allowed to fail (default 0)")
+      ->check(CLI::Range(0.0, 100.0));
+  sub->add_option("--warn-percent", t.warn_percent,
+                  "Percentage of pixels allowed to warn (default 0)")
+      ->check(CLI::Range(0.0, 100.0));
+  sub->add_option("--fail-relative", t.fail_relative,
+                  "Also require |A-B| > this * (|A|+|B|)/2 to fail (default 0: off)")
+      ->check(CLI::NonNegativeNumber);
+  sub->add_option("--warn-relative", t.warn_relative,
+                  "Also require |A-B| > this * (|A|+|B|)/2 to warn (default 0: off)")
+      ->check(CLI::NonNegativeNumber);
+  sub->add_option("--hard-fail", t.hard_fail, "Fail if any one error exceeds this (default inf)")
+      ->check(CLI::NonNegativeNumber);
+  sub->add_option("--hard-warn", t.hard_warn, "Warn if any one error exceeds this (default inf)")
+      ->check(CLI::NonNegativeNumber);
+  sub->add_option("--json", args->json, "Write every number as JSON to FILE");
+  sub->add_option("--html", args->html,
+                  "Write an HTML report to FILE (images in <FILE stem>_files/ beside it)");
+  sub->add_option("--diff", args->diff, "Write a heat-map difference PNG per frame into DIR");
+  sub->add_option("--threads", args->threads, "Frames compared at once (default 2)")
+      ->check(CLI::Range(1, 256));
+  return {sub, [args] { return run_compare(*args); }};
 }
 
 }  // namespace raintrace::cli
