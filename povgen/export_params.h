@@ -3,8 +3,8 @@
 // re-checked by povgen before they touch POV-Ray text (defence in depth).
 #pragma once
 
-#include <string>
 #include <glm/vec3.hpp>
+#include <string>
 
 #include "sim/camera.h"
 

@@ -11,24 +11,24 @@
 namespace raintrace::povgen {
 
 struct FrameEntry {
-  int number = 0;            ///< 1-based frame number
-  std::string scene;         ///< "frames/frame_0001.pov", relative to the output folder
-  std::string image;         ///< "images/frame_0001.png", relative to the output folder
-  std::string input_hash;    ///< hash of everything this frame's render depends on
+  int number = 0;                   ///< 1-based frame number
+  std::string scene;                ///< "frames/frame_0001.pov", relative to the output folder
+  std::string image;                ///< "images/frame_0001.png", relative to the output folder
+  std::string input_hash;           ///< hash of everything this frame's render depends on
   std::string status = "exported";  ///< "exported" | "rendered" | "failed"
-  std::string rendered_hash; ///< input_hash of the inputs the existing image was made from
+  std::string rendered_hash;        ///< input_hash of the inputs the existing image was made from
   double render_seconds = 0.0;
-  std::string error;         ///< POV-Ray's error line when status == "failed"
+  std::string error;  ///< POV-Ray's error line when status == "failed"
 };
 
 struct Manifest {
   std::string raintrace_version;
-  std::string scene_hash;    ///< hash of the scene file's bytes
+  std::string scene_hash;  ///< hash of the scene file's bytes
   std::uint64_t seed = 0;
   int width = 0;
   int height = 0;
   double fps = 0.0;
-  std::string quality;       ///< "preview" | "final"
+  std::string quality;  ///< "preview" | "final"
   std::vector<FrameEntry> frames;
 };
 

@@ -1,0 +1,141 @@
+// Values → POV-Ray text: golden text for tiny hand-built frames, determinism across thread
+// counts, and refusal of non-finite numbers.
+#include "povgen/frame_text.h"
+
+#include <gtest/gtest.h>
+#include <limits>
+#include <stdexcept>
+
+#include "povgen/frame_values.h"
+#include "povgen/synthetic_rain.h"
+
+namespace raintrace::povgen {
+namespace {
+
+/// One cell of 16×64 texels: uv quad inset by half a texel: u 0.5/16 … 15.5/16,
+/// v 0.5/64 … 63.5/64.
+StreakAtlasLayout one_cell() { return StreakAtlasLayout{1, 1, 16, 64}; }
+
+TEST(FrameText, GoldenTinyFrame) {
+  FrameValues values;
+  values.index = 7;
+  values.flash = 0.5f;
+  values.flash_position = {1.0f, 300.0f, 200.0f};
+  values.drops.push_back({{0.5f, 1.25f, -2.0f}, 0.001f, 1.0f});
+  values.drops.push_back({{0.0f, 2.0f, -1.5f}, 0.0025f, 0.75f});
+  StreakValue streak;
+  streak.corners = {glm::vec3{0.0f, 2.0f, 4.0f}, glm::vec3{0.5f, 2.0f, 4.0f},
+                    glm::vec3{0.5f, 1.0f, 4.0f}, glm::vec3{0.0f, 1.0f, 4.0f}};
+  streak.cell = 0;
+  values.streaks.push_back(streak);
+  values.splashes.push_back({{1.0f, 0.0f, 2.0f}, 0.0005f, 1.0f});
+  values.bolts.push_back({{{{0.0f, 100.0f, 50.0f}, {2.0f, 0.0f, 50.0f}, 0.5f}}, 0.25f});
+  const std::string expected =
+      "// raintrace frame 7\n"
+      "#version 3.7;\n"
+      "#declare RT_Flash=0.5;\n"
+      "#declare RT_FlashPosition=<1,300,200>;\n"
+      "#include \"scene.inc\"\n"
+      "union{\n"
+      "sphere{<0.5,1.25,-2>,0.001}\n"
+      "sphere{0,0.0025 scale<1,0.75,1>translate<0,2,-1.5>}\n"
+      "material{RT_DropMaterial}\n"
+      "no_shadow hollow\n"
+      "}\n"
+      "mesh2{\n"
+      "vertex_vectors{4,\n"
+      "<0,2,4>,<0.5,2,4>,<0.5,1,4>,<0,1,4>,\n"
+      "}\n"
+      "uv_vectors{4,\n"
+      "<0.03125,0.9921875>,<0.96875,0.9921875>,<0.96875,0.0078125>,<0.03125,0.0078125>,\n"
+      "}\n"
+      "face_indices{2,\n"
+      "<0,1,2>,<0,2,3>,\n"
+      "}\n"
+      "uv_indices{2,\n"
+      "<0,1,2>,<0,2,3>,\n"
+      "}\n"
+      "texture{RT_StreakTexture}\n"
+      "no_shadow hollow\n"
+      "}\n"
+      "union{\n"
+      "sphere{<1,0,2>,0.0005}\n"
+      "material{RT_SplashMaterial}\n"
+      "no_shadow hollow\n"
+      "}\n"
+      "#if(RT_Mask=0)\n"
+      "union{\n"
+      "cylinder{<0,100,50>,<2,0,50>,0.5}\n"
+      "RT_BoltTexture(0.25)\n"
+      "no_shadow hollow\n"
+      "}\n"
+      "#end\n";
+  EXPECT_EQ(frame_text(values, one_cell()), expected);
+}
+
+TEST(FrameText, EmptyFrameHasOnlyTheHeader) {
+  FrameValues values;
+  values.index = 1;
+  EXPECT_EQ(frame_text(values),
+            "// raintrace frame 1\n#version 3.7;\n#declare RT_Flash=0;\n"
+            "#declare RT_FlashPosition=<0,0,0>;\n#include \"scene.inc\"\n");
+}
+
+TEST(FrameText, SecondStreakUsesItsCellsUvQuad) {
+  // Cell 5 of the default 8×8 atlas: uv indices 20..23.
+  FrameValues values;
+  StreakValue s;
+  s.corners = {glm::vec3{0.0f}, glm::vec3{1.0f, 0.0f, 0.0f}, glm::vec3{1.0f, 1.0f, 0.0f},
+               glm::vec3{0.0f, 1.0f, 0.0f}};
+  s.cell = 0;
+  values.streaks.push_back(s);
+  s.cell = 5;
+  values.streaks.push_back(s);
+  const std::string text = frame_text(values);
+  EXPECT_NE(text.find("face_indices{4,\n<0,1,2>,<0,2,3>,\n<4,5,6>,<4,6,7>,\n}"), std::string::npos);
+  EXPECT_NE(text.find("uv_indices{4,\n<0,1,2>,<0,2,3>,\n<20,21,22>,<20,22,23>,\n}"),
+            std::string::npos);
+  EXPECT_NE(text.find("uv_vectors{256,"), std::string::npos);
+}
+
+TEST(FrameText, SameFrameGivesIdenticalBytesWhateverTheThreadCount) {
+  const ExportParams look;
+  const sim::Frame frame = synthetic_rain(60000, look.camera, 16.0 / 9.0, 12.0, 2.0, 3);
+  const FrameValues values = build_frame_values(frame, look);
+  ASSERT_GT(values.streaks.size(), 40000u);  // several chunks of 16384
+  const std::string one = frame_text(values, {}, 1);
+  EXPECT_EQ(one, frame_text(values, {}, 1));
+  EXPECT_EQ(one, frame_text(values, {}, 2));
+  EXPECT_EQ(one, frame_text(values, {}, 3));
+}
+
+TEST(FrameText, NonFiniteValuesAreRefused) {
+  FrameValues values;
+  values.drops.push_back({{std::numeric_limits<float>::quiet_NaN(), 0.0f, 0.0f}, 0.001f, 1.0f});
+  EXPECT_THROW(frame_text(values), std::invalid_argument);
+  EXPECT_THROW(frame_text(values, {}, 2), std::invalid_argument);
+  FrameValues flash;
+  flash.flash = std::numeric_limits<float>::infinity();
+  EXPECT_THROW(frame_text(flash), std::invalid_argument);
+}
+
+TEST(FrameText, MaskReusesTheFrameFile) {
+  EXPECT_EQ(mask_text("frames/frame_0003.pov"),
+            "// raintrace rain mask: the frame's rain in white on black\n#version 3.7;\n"
+            "#declare RT_Mask=1;\n#include \"frames/frame_0003.pov\"\n");
+  EXPECT_THROW(mask_text("frames/x\"\n#system"), std::invalid_argument);
+  EXPECT_THROW(mask_text("../etc/passwd"), std::invalid_argument);
+  EXPECT_THROW(mask_text("/etc/passwd"), std::invalid_argument);
+}
+
+TEST(FrameText, FrameNamesHaveFourDigitsOrMore) {
+  EXPECT_EQ(frame_digits(48), 4);
+  EXPECT_EQ(frame_digits(9999), 4);
+  EXPECT_EQ(frame_digits(10000), 5);
+  EXPECT_EQ(frame_file_name("frame", 1, 4, ".pov"), "frame_0001.pov");
+  EXPECT_EQ(frame_file_name("mask", 48, 4, ".png"), "mask_0048.png");
+  EXPECT_EQ(frame_file_name("frame", 12345, 5, ".pov"), "frame_12345.pov");
+}
+
+}  // namespace
+}  // namespace raintrace::povgen

@@ -1,0 +1,145 @@
+// Frame → values: culling, near/far split, streak quads, lightning light placement.
+#include "povgen/frame_values.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "povgen/drop_shape.h"
+#include "povgen/view_frustum.h"
+
+namespace raintrace::povgen {
+namespace {
+
+/// Axis ratios below this are written with a scale; above it the flattening is under 0.5 % of
+/// the radius, invisible at any size we render, and a bare sphere parses 40 % faster.
+constexpr float kRoundEnough = 0.995f;
+
+struct StreakContext {
+  const ViewFrustum& view;
+  const StreakAtlasLayout& atlas;
+  float exposure_s;
+  int width_px;
+};
+
+/// Builds the quad of one far drop; false when it is culled or too faint to see.
+bool make_streak(const StreakContext& ctx, const glm::vec3& position, const glm::vec3& velocity,
+                 const glm::vec3& acceleration, float diameter, float opacity, StreakValue& out) {
+  const float radius = 0.5f * diameter;
+  const float speed = glm::length(velocity);
+  // A drop at rest (or slower than 1 mm/s) still falls along -y for the quad's orientation.
+  const glm::vec3 axis = speed > 1e-3f ? velocity / speed : glm::vec3{0.0f, -1.0f, 0.0f};
+  float length = static_cast<float>(
+      streak_length(speed, glm::dot(acceleration, axis), ctx.exposure_s, radius));
+  glm::vec3 start = position - axis * radius;
+  glm::vec3 end = start + axis * length;
+  if (!ctx.view.segment_visible(start, end, radius)) return false;
+
+  const glm::vec3 middle = 0.5f * (start + end);
+  const float depth = std::max(ctx.view.depth(middle), 1e-3f);
+  const float pixel = ctx.view.pixel_size(depth, ctx.width_px);
+  // Keep the drop's light when it is thinner or shorter than a pixel: widen, fade to match.
+  float width = diameter;
+  float alpha = std::clamp(opacity, 0.0f, 1.0f);
+  if (width < pixel) {
+    alpha *= width / pixel;
+    width = pixel;
+  }
+  if (length < pixel) {
+    alpha *= length / pixel;
+    const glm::vec3 half = axis * (0.5f * pixel);
+    start = middle - half;
+    end = middle + half;
+    length = pixel;
+  }
+  const double ratio = drop_axis_ratio(diameter);
+  out.cell = streak_atlas_cell(ctx.atlas, ratio, alpha);
+  if (out.cell < 0) return false;
+
+  // Face the camera while staying on the motion axis: side ⟂ axis and ⟂ line of sight.
+  glm::vec3 side = glm::cross(axis, ctx.view.eye() - middle);
+  const float side_length = glm::length(side);
+  side = side_length > 1e-9f ? side / side_length : ctx.view.right();
+  side *= 0.5f * width;
+  out.corners = {start - side, start + side, end + side, end - side};
+  return true;
+}
+
+glm::vec3 default_flash_position(const ViewFrustum& view) {
+  // Sheet lightning from behind the clouds, high and ahead of the camera.
+  return view.eye() + view.forward() * 200.0f + glm::vec3{0.0f, 300.0f, 0.0f};
+}
+
+}  // namespace
+
+FrameValues build_frame_values(const sim::Frame& frame, const ExportParams& look,
+                               const StreakAtlasLayout& atlas) {
+  const ViewFrustum view(look.camera, static_cast<double>(look.width) / look.height);
+  FrameValues values;
+  values.index = frame.index;
+
+  const auto split = static_cast<float>(look.sphere_distance_m);
+  const StreakContext ctx{view, atlas, static_cast<float>(look.camera.exposure_s), look.width};
+  const sim::Drops& drops = frame.drops;
+  const std::size_t count = drops.size();
+  const bool has_acceleration = drops.acceleration.size() == count;
+  const bool has_opacity = drops.opacity.size() == count;
+  values.streaks.reserve(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const glm::vec3& p = drops.position[i];
+    const float diameter = drops.diameter[i];
+    const float opacity = has_opacity ? drops.opacity[i] : 1.0f;
+    if (!(opacity > 0.0f) || !(diameter > 0.0f)) continue;
+    if (glm::length(p - view.eye()) < split) {
+      const float radius = 0.5f * diameter;
+      if (!view.sphere_visible(p, radius)) continue;
+      const auto ratio = static_cast<float>(drop_axis_ratio(diameter));
+      // Equal volume: the horizontal radius grows as the drop flattens, a = R·ratio^(-1/3).
+      const float equatorial = radius / std::cbrt(ratio);
+      values.drops.push_back({p, equatorial, ratio < kRoundEnough ? ratio : 1.0f});
+      continue;
+    }
+    StreakValue streak;
+    const glm::vec3 acceleration = has_acceleration ? drops.acceleration[i] : glm::vec3{0.0f};
+    if (make_streak(ctx, p, drops.velocity[i], acceleration, diameter, opacity, streak)) {
+      values.streaks.push_back(streak);
+    }
+  }
+
+  const sim::SplashDroplets& splashes = frame.splashes;
+  for (std::size_t i = 0; i < splashes.size(); ++i) {
+    const glm::vec3& p = splashes.position[i];
+    const float opacity = i < splashes.opacity.size() ? splashes.opacity[i] : 1.0f;
+    if (!(opacity > 0.0f)) continue;
+    // Droplets are glints: never smaller than half a pixel, or POV-Ray without AA misses them.
+    const float pixel = view.pixel_size(std::max(view.depth(p), 1e-3f), look.width);
+    const float radius = std::max(0.5f * splashes.diameter[i], 0.5f * pixel);
+    if (!view.sphere_visible(p, radius)) continue;
+    values.splashes.push_back({p, radius, 1.0f});
+  }
+
+  values.flash = std::clamp(frame.flash, 0.0f, 1.0f);
+  values.flash_position = default_flash_position(view);
+  float brightest = -1.0f;
+  for (const sim::Bolt& bolt : frame.bolts) {
+    BoltValue out;
+    out.brightness = std::clamp(bolt.brightness, 0.0f, 1.0f);
+    for (const sim::BoltSegment& s : bolt.segments) {
+      if (!view.segment_visible(s.start, s.end, s.radius)) continue;
+      out.segments.push_back({s.start, s.end, s.radius});
+    }
+    // The light sits at the highest point of the brightest bolt, where the channel meets cloud.
+    if (!bolt.segments.empty() && out.brightness > brightest) {
+      brightest = out.brightness;
+      values.flash_position = bolt.segments.front().start;
+      for (const sim::BoltSegment& s : bolt.segments) {
+        if (s.start.y > values.flash_position.y) values.flash_position = s.start;
+        if (s.end.y > values.flash_position.y) values.flash_position = s.end;
+      }
+    }
+    if (!out.segments.empty()) values.bolts.push_back(std::move(out));
+  }
+  return values;
+}
+
+}  // namespace raintrace::povgen

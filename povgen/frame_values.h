@@ -1,0 +1,57 @@
+// Part (a) of scene generation: a simulated frame → the exact values the POV-Ray text will
+// hold. Pure; culls to the view frustum, splits near drops (refractive spheres) from far ones
+// (streak quads) and builds each streak's camera-facing quad.
+#pragma once
+
+#include <array>
+#include <glm/vec3.hpp>
+#include <vector>
+
+#include "povgen/export_params.h"
+#include "povgen/streak_atlas.h"
+#include "sim/frame.h"
+
+namespace raintrace::povgen {
+
+struct SphereValue {
+  glm::vec3 centre;         ///< m
+  float radius;             ///< m, equatorial (horizontal) radius
+  float axis_ratio = 1.0f;  ///< vertical/horizontal; 1 = round, written without a scale
+};
+
+/// A camera-facing quad around a drop's velocity axis. Corners in order: start−side,
+/// start+side, end+side, end−side (start = the drop's trailing end at shutter open).
+struct StreakValue {
+  std::array<glm::vec3, 4> corners;
+  int cell;  ///< index into the streak atlas (streak_atlas_cell)
+};
+
+struct CylinderValue {
+  glm::vec3 start;
+  glm::vec3 end;
+  float radius;
+};
+
+struct BoltValue {
+  std::vector<CylinderValue> segments;
+  float brightness;  ///< 0..1
+};
+
+struct FrameValues {
+  int index = 0;
+  std::vector<SphereValue> drops;     ///< near drops: nearer than sphere_distance_m
+  std::vector<StreakValue> streaks;   ///< far drops
+  std::vector<SphereValue> splashes;  ///< splash droplets
+  std::vector<BoltValue> bolts;
+  float flash = 0.0f;              ///< 0..1
+  glm::vec3 flash_position{0.0f};  ///< where the lightning light sits
+};
+
+/// Builds the values of one frame. Drops and droplets wholly outside the view are dropped;
+/// a streak narrower (or shorter) than one pixel is widened to a pixel and made fainter by the
+/// same factor, so distant rain keeps its light without antialiasing. Throws
+/// std::invalid_argument if the camera is degenerate or a value is not finite.
+FrameValues build_frame_values(const sim::Frame& frame, const ExportParams& look,
+                               const StreakAtlasLayout& atlas = {});
+
+}  // namespace raintrace::povgen

@@ -1,0 +1,172 @@
+// Frame → values: frustum culling, the near/far split, streak geometry and opacity.
+#include "povgen/frame_values.h"
+
+#include <gtest/gtest.h>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <limits>
+
+#include "povgen/drop_shape.h"
+#include "povgen/view_frustum.h"
+
+namespace raintrace::povgen {
+namespace {
+
+/// Default look: camera at (0, 1.6, −5) looking along +z, 60° horizontal, 640×360.
+ExportParams default_look() { return ExportParams{}; }
+
+void add_drop(sim::Frame& frame, glm::vec3 position, glm::vec3 velocity, float diameter) {
+  sim::Drops& d = frame.drops;
+  d.id.push_back(d.id.size());
+  d.position.push_back(position);
+  d.velocity.push_back(velocity);
+  d.acceleration.push_back(glm::vec3{0.0f});
+  d.diameter.push_back(diameter);
+  d.age.push_back(0.0f);
+  d.vanishing_rate.push_back(0.0f);
+  d.opacity.push_back(1.0f);
+  d.colour.push_back(glm::vec3{1.0f});
+}
+
+TEST(ViewFrustum, CullsAtTheEdgeOfTheFieldOfView) {
+  // At depth 5 (z = 0) the half width is 5·tan 30° = 2.88675 m, the half height 2.88675/(16/9)
+  // = 1.62380 m around y = 1.6.
+  const ViewFrustum view(sim::Camera{}, 16.0 / 9.0);
+  EXPECT_TRUE(view.sphere_visible({2.85f, 1.6f, 0.0f}, 0.001f));
+  EXPECT_FALSE(view.sphere_visible({2.95f, 1.6f, 0.0f}, 0.001f));
+  EXPECT_TRUE(view.sphere_visible({-2.85f, 1.6f, 0.0f}, 0.001f));
+  EXPECT_FALSE(view.sphere_visible({-2.95f, 1.6f, 0.0f}, 0.001f));
+  EXPECT_TRUE(view.sphere_visible({0.0f, 1.6f + 1.60f, 0.0f}, 0.001f));
+  EXPECT_FALSE(view.sphere_visible({0.0f, 1.6f + 1.65f, 0.0f}, 0.001f));
+  EXPECT_FALSE(view.sphere_visible({0.0f, 1.6f - 1.65f, 0.0f}, 0.001f));
+  // Behind the camera.
+  EXPECT_FALSE(view.sphere_visible({0.0f, 1.6f, -6.0f}, 0.001f));
+  // A big sphere just outside still reaches into view.
+  EXPECT_TRUE(view.sphere_visible({2.95f, 1.6f, 0.0f}, 0.2f));
+}
+
+TEST(FrameValues, DropsOutsideTheViewAreNotWritten) {
+  sim::Frame frame;
+  add_drop(frame, {0.0f, 1.6f, 5.0f}, {0.0f, -9.0f, 0.0f}, 2e-3f);    // in view, far
+  add_drop(frame, {30.0f, 1.6f, 5.0f}, {0.0f, -9.0f, 0.0f}, 2e-3f);   // far right
+  add_drop(frame, {0.0f, 1.6f, -8.0f}, {0.0f, -9.0f, 0.0f}, 2e-3f);   // behind
+  add_drop(frame, {0.0f, 20.0f, 5.0f}, {0.0f, -9.0f, 0.0f}, 2e-3f);   // above
+  add_drop(frame, {0.1f, 1.5f, -3.0f}, {0.0f, -9.0f, 0.0f}, 2e-3f);   // in view, near
+  add_drop(frame, {-2.0f, 1.6f, -3.5f}, {0.0f, -9.0f, 0.0f}, 2e-3f);  // near, left of view
+  const FrameValues values = build_frame_values(frame, default_look());
+  EXPECT_EQ(values.streaks.size(), 1u);
+  ASSERT_EQ(values.drops.size(), 1u);
+  EXPECT_FLOAT_EQ(values.drops[0].centre.x, 0.1f);
+}
+
+TEST(FrameValues, NearFarSplitFollowsSphereDistance) {
+  // Distances from the eye (0, 1.6, −5): 2.9 m and 3.1 m along the view axis.
+  sim::Frame frame;
+  add_drop(frame, {0.0f, 1.6f, -2.1f}, {0.0f, -9.0f, 0.0f}, 1e-3f);
+  add_drop(frame, {0.0f, 1.6f, -1.9f}, {0.0f, -9.0f, 0.0f}, 1e-3f);
+  ExportParams look = default_look();
+  look.sphere_distance_m = 3.0;
+  FrameValues values = build_frame_values(frame, look);
+  EXPECT_EQ(values.drops.size(), 1u);
+  EXPECT_EQ(values.streaks.size(), 1u);
+  look.sphere_distance_m = 0.0;  // everything streaks
+  values = build_frame_values(frame, look);
+  EXPECT_EQ(values.drops.size(), 0u);
+  EXPECT_EQ(values.streaks.size(), 2u);
+}
+
+TEST(FrameValues, LargeNearDropsAreFlattenedAtEqualVolume) {
+  sim::Frame frame;
+  add_drop(frame, {0.0f, 1.6f, -4.0f}, {0.0f, -9.0f, 0.0f}, 5e-3f);
+  add_drop(frame, {0.1f, 1.6f, -4.0f}, {0.0f, -2.0f, 0.0f}, 0.5e-3f);
+  const FrameValues values = build_frame_values(frame, default_look());
+  ASSERT_EQ(values.drops.size(), 2u);
+  const SphereValue& big = values.drops[0];
+  // Beard-Chuang at 5 mm: 0.7060875. Equal volume: a²·b = R³ with b = ratio·a.
+  EXPECT_NEAR(big.axis_ratio, 0.7060875, 1e-6);
+  const double a = big.radius;
+  EXPECT_NEAR(a * a * a * big.axis_ratio, 2.5e-3 * 2.5e-3 * 2.5e-3, 1e-12);
+  // 0.5 mm drops are round to 0.1 % and written as bare spheres.
+  EXPECT_EQ(values.drops[1].axis_ratio, 1.0f);
+}
+
+TEST(FrameValues, StreakLengthFollowsExposureAndFacesTheCamera) {
+  // A 2 mm drop falling at 9 m/s, 10 m in front of the eye, exposure 0.02 s:
+  // L = 9·0.02 + 0 + 2·0.001 = 0.182 m. One pixel at depth 10 m is 2·10·tan30°/640 = 0.018042 m,
+  // wider than the drop, so the quad is one pixel wide.
+  sim::Frame frame;
+  add_drop(frame, {0.0f, 1.6f, 5.0f}, {0.0f, -9.0f, 0.0f}, 2e-3f);
+  const FrameValues values = build_frame_values(frame, default_look());
+  ASSERT_EQ(values.streaks.size(), 1u);
+  const auto& c = values.streaks[0].corners;
+  const glm::vec3 along = c[3] - c[0];
+  const glm::vec3 across = c[1] - c[0];
+  EXPECT_NEAR(glm::length(along), 0.182, 1e-5);
+  EXPECT_NEAR(glm::length(across), 0.0180422, 1e-5);
+  // Along the fall (−y), starting R above the drop; across ⟂ both the fall and the view (x).
+  EXPECT_NEAR(c[0].y + c[1].y, 2.0f * (1.6f + 0.001f), 1e-5);
+  EXPECT_NEAR(glm::dot(glm::normalize(along), glm::vec3{0, -1, 0}), 1.0, 1e-6);
+  EXPECT_NEAR(std::fabs(glm::normalize(across).x), 1.0, 1e-6);
+  // Opacity: 2 mm spread over 18.04 mm → 0.1108, log2 → 3.17 → row 3 of the atlas; the 2 mm
+  // drop's axis ratio 0.9276 → flatness 0.145 → column round(0.145·7) = 1.
+  const StreakAtlasLayout atlas;
+  EXPECT_EQ(values.streaks[0].cell, 3 * atlas.shapes + 1);
+}
+
+TEST(FrameValues, SlantedStreaksFollowTheVelocity) {
+  // Wind-blown drop: velocity (3, −8, 0) at depth 8 m to the right of the axis.
+  sim::Frame frame;
+  const glm::vec3 v{3.0f, -8.0f, 0.0f};
+  add_drop(frame, {1.0f, 1.6f, 3.0f}, v, 3e-3f);
+  const FrameValues values = build_frame_values(frame, default_look());
+  ASSERT_EQ(values.streaks.size(), 1u);
+  const auto& c = values.streaks[0].corners;
+  const glm::vec3 along = glm::normalize(c[3] - c[0]);
+  EXPECT_NEAR(glm::dot(along, glm::normalize(v)), 1.0, 1e-5);
+  // Length: |v|·t + 2R = 8.5440·0.02 + 0.003 = 0.173880 m.
+  EXPECT_NEAR(glm::length(c[3] - c[0]), 0.17388, 1e-4);
+  // The side is perpendicular to the motion and to the line of sight (camera-facing).
+  const glm::vec3 side = glm::normalize(c[1] - c[0]);
+  const glm::vec3 middle = 0.25f * (c[0] + c[1] + c[2] + c[3]);
+  const glm::vec3 sight = glm::normalize(glm::vec3{0.0f, 1.6f, -5.0f} - middle);
+  EXPECT_NEAR(glm::dot(side, along), 0.0, 1e-5);
+  EXPECT_NEAR(glm::dot(side, sight), 0.0, 1e-5);
+}
+
+TEST(FrameValues, FaintAndVanishedDropsAreSkipped) {
+  sim::Frame frame;
+  add_drop(frame, {0.0f, 1.6f, 5.0f}, {0.0f, -9.0f, 0.0f}, 2e-3f);
+  frame.drops.opacity[0] = 0.0f;
+  EXPECT_TRUE(build_frame_values(frame, default_look()).streaks.empty());
+  // 0.05 mm drop at 10 m: 0.05/18.04 = 0.00277 coverage, −log2 = 8.5 → row 8: past the
+  // faintest row (7), nothing visible is lost.
+  frame.drops.opacity[0] = 1.0f;
+  frame.drops.diameter[0] = 5e-5f;
+  EXPECT_TRUE(build_frame_values(frame, default_look()).streaks.empty());
+}
+
+TEST(FrameValues, LightningLightSitsAtTheTopOfTheBrightestBolt) {
+  sim::Frame frame;
+  frame.flash = 0.8f;
+  sim::Bolt bolt;
+  bolt.brightness = 0.8f;
+  bolt.segments.push_back({{10.0f, 300.0f, 200.0f}, {12.0f, 150.0f, 200.0f}, 0.6f, 0});
+  bolt.segments.push_back({{12.0f, 150.0f, 200.0f}, {11.0f, 0.0f, 200.0f}, 0.6f, 0});
+  frame.bolts.push_back(bolt);
+  const FrameValues values = build_frame_values(frame, default_look());
+  EXPECT_FLOAT_EQ(values.flash, 0.8f);
+  EXPECT_EQ(values.flash_position, glm::vec3(10.0f, 300.0f, 200.0f));
+  ASSERT_EQ(values.bolts.size(), 1u);
+  // The upper segment is above the view (y 150..300 at depth 205 m, half height ≈ 66.6 m):
+  // culled; the lower one crosses the view and stays.
+  EXPECT_EQ(values.bolts[0].segments.size(), 1u);
+}
+
+TEST(FrameValues, DegenerateCameraThrows) {
+  ExportParams look = default_look();
+  look.camera.look_at = look.camera.position;
+  EXPECT_THROW(build_frame_values(sim::Frame{}, look), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace raintrace::povgen

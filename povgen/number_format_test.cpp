@@ -1,0 +1,76 @@
+// Number formatting: known answers, agreement with std::to_chars, round trips, rejection of
+// non-finite values.
+#include "povgen/number_format.h"
+
+#include <gtest/gtest.h>
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+namespace raintrace::povgen {
+namespace {
+
+TEST(NumberFormat, KnownAnswers) {
+  EXPECT_EQ(format_number(1.5), "1.5");
+  EXPECT_EQ(format_number(-0.25), "-0.25");
+  EXPECT_EQ(format_number(0.0), "0");
+  EXPECT_EQ(format_number(-0.0), "0");  // POV-Ray reads "-0" fine, but bytes must not vary
+  EXPECT_EQ(format_number(100.0), "100");
+  EXPECT_EQ(format_number(3.14159265358979), "3.141593");  // 7 significant digits
+  EXPECT_EQ(format_number(1234567.8), "1234568");
+  EXPECT_EQ(format_number(0.001), "0.001");
+  EXPECT_EQ(format_number(0.00123456789), "0.001234568");
+  EXPECT_EQ(format_number(9.9999999), "10");  // rounding carries into a new digit
+  EXPECT_EQ(format_number(1e-5), "1e-05");    // outside the fast range: std::to_chars
+  EXPECT_EQ(format_number(2.5e9), "2.5e+09");
+  EXPECT_EQ(format_number(1e-9 * 0.0), "0");
+}
+
+TEST(NumberFormat, AgreesWithToCharsSevenDigits) {
+  // The fast path must produce exactly what std::to_chars(general, 7) produces (%.7g).
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> exponent(-3.0, 7.0);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int i = 0; i < 200000; ++i) {
+    const double v = (unit(rng) < 0.5 ? -1.0 : 1.0) * std::pow(10.0, exponent(rng));
+    char expected[64];
+    const auto r = std::to_chars(expected, expected + 64, v, std::chars_format::general, 7);
+    ASSERT_EQ(format_number(v), std::string(expected, r.ptr)) << "value " << v;
+  }
+}
+
+TEST(NumberFormat, RoundTripsWithinHalfAUnitOfTheSeventhDigit) {
+  // Seven significant digits: |parsed − v| ≤ 0.5·10^(e−6) with e = floor(log10|v|), so the
+  // relative error is at most 5e-7.
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> exponent(-12.0, 12.0);
+  for (int i = 0; i < 100000; ++i) {
+    const double v = std::pow(10.0, exponent(rng)) * (i % 2 ? 1.0 : -1.0);
+    const std::string text = format_number(v);
+    double parsed = 0.0;
+    const auto r = std::from_chars(text.data(), text.data() + text.size(), parsed);
+    ASSERT_EQ(r.ec, std::errc{}) << text;
+    ASSERT_LE(std::fabs(parsed - v), 5.0000001e-7 * std::fabs(v)) << v << " -> " << text;
+  }
+}
+
+TEST(NumberFormat, RejectsNanAndInfinity) {
+  EXPECT_THROW(format_number(std::numeric_limits<double>::quiet_NaN()), std::invalid_argument);
+  EXPECT_THROW(format_number(std::numeric_limits<double>::infinity()), std::invalid_argument);
+  EXPECT_THROW(format_number(-std::numeric_limits<double>::infinity()), std::invalid_argument);
+}
+
+TEST(NumberFormat, WritesIndices) {
+  char buffer[max_number_chars];
+  EXPECT_EQ(std::string(buffer, write_index(buffer, 0)), "0");
+  EXPECT_EQ(std::string(buffer, write_index(buffer, 7)), "7");
+  EXPECT_EQ(std::string(buffer, write_index(buffer, 10)), "10");
+  EXPECT_EQ(std::string(buffer, write_index(buffer, 4000000)), "4000000");
+  EXPECT_EQ(std::string(buffer, write_index(buffer, 12345678901ULL)), "12345678901");
+}
+
+}  // namespace
+}  // namespace raintrace::povgen

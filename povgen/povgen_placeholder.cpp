@@ -1,1 +1,0 @@
-// Placeholder until povgen/ has sources.

@@ -1,0 +1,205 @@
+// End-to-end checks with the real POV-Ray (ctest label `povray`; skipped without povray):
+// every template and fog mode parses and renders, scene.ini names images frame_NNNN.png for a
+// sub-range, masks are rain on black, renders repeat across thread counts, mist deepens.
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "povgen/frame_text.h"
+#include "povgen/frame_values.h"
+#include "povgen/output_folder.h"
+#include "povgen/synthetic_rain.h"
+
+namespace raintrace::povgen {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool have_povray() { return std::system("command -v povray >/dev/null 2>&1") == 0; }
+
+#define SKIP_WITHOUT_POVRAY() \
+  if (!have_povray()) GTEST_SKIP() << "povray is not installed: POV-Ray tests skipped"
+
+/// Runs povray in `dir` with `args`; returns its exit status and leaves its output in povray.log.
+int run_povray(const fs::path& dir, const std::string& args) {
+  const std::string command =
+      "cd '" + dir.string() + "' && povray " + args + " -D -V >povray.log 2>&1";
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string log_of(const fs::path& dir) {
+  return read_file_bytes(dir / "povray.log").substr(0, 4000);
+}
+
+/// Decoded RGB pixels in 0..1 (PNG bytes differ between identical renders: compare pixels).
+std::vector<float> read_rgb(const fs::path& path) {
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in) return {};
+  const OIIO::ImageSpec& spec = in->spec();
+  std::vector<float> px(static_cast<std::size_t>(spec.width) * spec.height * 3);
+  in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, px.data());
+  return px;
+}
+
+double mean_abs_difference(const std::vector<float>& a, const std::vector<float>& b) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) sum += std::fabs(a[i] - b[i]);
+  return sum / static_cast<double>(a.size());
+}
+
+double spread(const std::vector<float>& px) {
+  const auto [lo, hi] = std::minmax_element(px.begin(), px.end());
+  return *hi - *lo;
+}
+
+/// A folder with the shared files and frames 1..frames of synthetic rain (flash in frame 1).
+fs::path make_folder(const std::string& name, ExportParams look, int frames = 1,
+                     std::size_t drops = 3000) {
+  const fs::path dir = fs::temp_directory_path() / ("raintrace_povray_test_" + name);
+  fs::remove_all(dir);
+  write_shared_files(dir, look, frames, dir);
+  for (int n = 1; n <= frames; ++n) {
+    sim::Frame frame = synthetic_rain(drops, look.camera, double(look.width) / look.height, 12.0,
+                                      1.0, static_cast<std::uint64_t>(n));
+    frame.index = n;
+    frame.splashes.position = {{0.2f, 0.01f, 1.0f}};
+    frame.splashes.velocity = {{0.0f, 1.0f, 0.0f}};
+    frame.splashes.diameter = {0.5e-3f};
+    frame.splashes.opacity = {1.0f};
+    if (n == 1) {
+      frame.flash = 0.5f;
+      sim::Bolt bolt;
+      bolt.brightness = 0.5f;
+      bolt.segments.push_back({{-40.0f, 120.0f, 150.0f}, {-35.0f, 40.0f, 150.0f}, 0.8f, 0});
+      bolt.segments.push_back({{-35.0f, 40.0f, 150.0f}, {-42.0f, 0.0f, 150.0f}, 0.8f, 0});
+      frame.bolts.push_back(bolt);
+    }
+    const std::string digits = frame_file_name("frame", n, frame_digits(frames), ".pov");
+    write_file_atomic(dir / "frames" / digits, frame_text(build_frame_values(frame, look)));
+    if (look.mask) {
+      write_file_atomic(dir / "frames" / frame_file_name("mask", n, frame_digits(frames), ".pov"),
+                        mask_text("frames/" + digits));
+    }
+  }
+  return dir;
+}
+
+ExportParams tiny_look() {
+  ExportParams look;
+  look.width = 48;
+  look.height = 27;
+  return look;
+}
+
+TEST(PovRayTemplates, EveryEnvironmentAndFogModeRenders) {
+  SKIP_WITHOUT_POVRAY();
+  struct Case {
+    const char* environment;
+    FogMode fog;
+  };
+  const Case cases[] = {{"night_street", FogMode::off}, {"night_street", FogMode::media},
+                        {"field", FogMode::off},        {"field", FogMode::ground},
+                        {"closeup", FogMode::off},      {"closeup", FogMode::media}};
+  for (const Case& c : cases) {
+    ExportParams look = tiny_look();
+    look.environment.name = c.environment;
+    look.fog.mode = c.fog;
+    const std::string name =
+        std::string{c.environment} + "_" + std::to_string(static_cast<int>(c.fog));
+    const fs::path dir = make_folder(name, look);
+    ASSERT_EQ(run_povray(dir, "scene.ini"), 0) << name << ":\n" << log_of(dir);
+    const auto px = read_rgb(dir / "images" / "frame_0001.png");
+    ASSERT_FALSE(px.empty()) << name;
+    EXPECT_GT(spread(px), 0.1) << name << ": image is blank";
+    fs::remove_all(dir);
+  }
+}
+
+TEST(PovRayAnimation, SceneIniNamesImagesWithFourDigitsForAnySubRange) {
+  SKIP_WITHOUT_POVRAY();
+  // 48 frames: with Final_Frame=48 POV-Ray would write frame_02.png. Frames 2-3 only.
+  const fs::path dir = make_folder("animation", tiny_look(), 48, 200);
+  ASSERT_EQ(run_povray(dir, "scene.ini +SF2 +EF3"), 0) << log_of(dir);
+  EXPECT_TRUE(fs::exists(dir / "images" / "frame_0002.png"));
+  EXPECT_TRUE(fs::exists(dir / "images" / "frame_0003.png"));
+  EXPECT_FALSE(fs::exists(dir / "images" / "frame_0001.png"));
+  EXPECT_FALSE(fs::exists(dir / "images" / "frame_02.png"));
+  // frame_number picked the right file: frames 2 and 3 hold different rain.
+  EXPECT_GT(mean_abs_difference(read_rgb(dir / "images" / "frame_0002.png"),
+                                read_rgb(dir / "images" / "frame_0003.png")),
+            0.0);
+  fs::remove_all(dir);
+}
+
+TEST(PovRayMask, MaskIsRainWhiteOnBlack) {
+  SKIP_WITHOUT_POVRAY();
+  ExportParams look = tiny_look();
+  look.mask = true;
+  const fs::path dir = make_folder("mask", look, 1, 400);
+  ASSERT_EQ(run_povray(dir, "mask.ini"), 0) << log_of(dir);
+  const auto px = read_rgb(dir / "images" / "mask_0001.png");
+  ASSERT_FALSE(px.empty());
+  std::size_t black = 0;
+  std::size_t bright = 0;
+  bool grey = true;
+  for (std::size_t i = 0; i < px.size(); i += 3) {
+    if (px[i] == 0.0f) ++black;
+    if (px[i] > 0.5f) ++bright;
+    grey = grey && px[i] == px[i + 1] && px[i] == px[i + 2];
+  }
+  const std::size_t pixels = px.size() / 3;
+  EXPECT_TRUE(grey) << "mask must be white on black, no colour";
+  EXPECT_GT(black, pixels / 2) << "the environment leaked into the mask";
+  EXPECT_GT(bright, 0u) << "no rain in the mask";
+  fs::remove_all(dir);
+}
+
+TEST(PovRayDeterminism, SameFrameSamePixelsWithOneOrTwoThreads) {
+  SKIP_WITHOUT_POVRAY();
+  ExportParams look = tiny_look();
+  look.fog.mode = FogMode::media;
+  const fs::path dir = make_folder("threads", look);
+  const std::string frame = "frames/frame_0001.pov +W48 +H27 +FN -A +L. ";
+  ASSERT_EQ(run_povray(dir, frame + "+WT1 +Oimages/one.png"), 0) << log_of(dir);
+  ASSERT_EQ(run_povray(dir, frame + "+WT2 +Oimages/two.png"), 0) << log_of(dir);
+  const auto one = read_rgb(dir / "images" / "one.png");
+  ASSERT_FALSE(one.empty());
+  EXPECT_EQ(one, read_rgb(dir / "images" / "two.png"));
+  fs::remove_all(dir);
+}
+
+TEST(PovRayMist, MistDeepensWithDensityAndDepth) {
+  SKIP_WITHOUT_POVRAY();
+  // The further the picture moves from the fog-free one, the deeper the mist: the difference
+  // must grow with density and with the depth of the foggy slab.
+  auto render = [](const std::string& name, double density, double depth) {
+    ExportParams look = tiny_look();
+    look.environment.name = "field";
+    look.fog.mode = density > 0 ? FogMode::media : FogMode::off;
+    look.fog.density_per_m = density;
+    look.fog.depth_m = depth;
+    const fs::path dir = make_folder("mist_" + name, look, 1, 100);
+    EXPECT_EQ(run_povray(dir, "scene.ini"), 0) << log_of(dir);
+    auto px = read_rgb(dir / "images" / "frame_0001.png");
+    fs::remove_all(dir);
+    return px;
+  };
+  const auto clear = render("clear", 0.0, 20.0);
+  const auto light = render("light", 0.02, 20.0);
+  const auto dense = render("dense", 0.2, 20.0);
+  const auto deep = render("deep", 0.02, 200.0);
+  ASSERT_FALSE(clear.empty());
+  const double d_light = mean_abs_difference(clear, light);
+  EXPECT_GT(d_light, 0.005);
+  EXPECT_GT(mean_abs_difference(clear, dense), 2.0 * d_light);
+  EXPECT_GT(mean_abs_difference(clear, deep), 1.5 * d_light);
+}
+
+}  // namespace
+}  // namespace raintrace::povgen

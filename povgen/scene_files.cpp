@@ -1,0 +1,154 @@
+// Text of scene.inc, scene.pov and scene.ini.
+#include "povgen/scene_files.h"
+
+#include <cmath>
+#include <glm/common.hpp>
+#include <stdexcept>
+#include <string>
+
+#include "povgen/frame_text.h"
+#include "povgen/number_format.h"
+#include "povgen/templates.h"
+
+namespace raintrace::povgen {
+namespace {
+
+std::string vec(const glm::dvec3& v) {
+  return "<" + format_number(v.x) + "," + format_number(v.y) + "," + format_number(v.z) + ">";
+}
+
+void check(bool ok, const char* what) {
+  if (!ok) throw std::invalid_argument(std::string{"export: "} + what);
+}
+
+void check_params(const ExportParams& look) {
+  check(look.width >= 16 && look.width <= 8192, "width must be in [16, 8192]");
+  check(look.height >= 16 && look.height <= 8192, "height must be in [16, 8192]");
+  check(std::isfinite(look.fps) && look.fps > 0.0, "fps must be finite and > 0");
+  check(std::isfinite(look.sphere_distance_m) && look.sphere_distance_m >= 0.0,
+        "sphere_distance_m must be finite and >= 0");
+  check(std::isfinite(look.lightning_light) && look.lightning_light >= 0.0,
+        "lightning_light must be finite and >= 0");
+  check(std::isfinite(look.fog.depth_m) && look.fog.depth_m > 0.0,
+        "fog depth_m must be finite and > 0");
+  check(std::isfinite(look.fog.density_per_m) && look.fog.density_per_m >= 0.0,
+        "fog density_per_m must be finite and >= 0");
+  check(std::isfinite(look.camera.fov_deg) && look.camera.fov_deg > 0.0 &&
+            look.camera.fov_deg < 180.0,
+        "camera fov_deg must be in (0, 180)");
+  if (look.environment.include_path.empty()) environment_template(look.environment.name);
+}
+
+std::string fog_text(const FogParams& fog, const sim::Camera& camera) {
+  std::string text;
+  if (fog.mode == FogMode::off || fog.density_per_m <= 0.0) return text;
+  const std::string colour = vec(glm::clamp(fog.colour, 0.0, 1.0));
+  if (fog.mode == FogMode::ground) {
+    // Ground fog: full density below the ground, thinning with height over depth_m. POV-Ray's
+    // `distance` is where fog reaches 63 % (e^-1), i.e. 1 / extinction.
+    text += "fog{fog_type 2 distance " + format_number(1.0 / fog.density_per_m) + " color rgb " +
+            colour + " fog_offset 0 fog_alt " + format_number(fog.depth_m) + " up y}\n";
+    return text;
+  }
+  // Media mist: a hollow sphere of radius depth_m around the camera (the camera must be inside
+  // a hollow container or media silently does nothing). Extinction = scattering + absorption =
+  // density; 70 % of it scatters light from the environment's lights (streetlight cones),
+  // 30 % absorbs (Lambert-Beer). Method 3 without jitter keeps renders repeatable.
+  const double scattering = 0.7 * fog.density_per_m;
+  const double absorption = 0.3 * fog.density_per_m;
+  text += "sphere{" + vec(camera.position) + "," + format_number(fog.depth_m) +
+          " hollow\n texture{pigment{rgbt 1}}\n interior{media{method 3 intervals 1 samples 3"
+          " jitter 0\n  scattering{1,rgb " +
+          format_number(scattering) + "*" + colour + " extinction 1}\n  absorption rgb " +
+          format_number(absorption) + "\n  emission RT_Flash*" +
+          format_number(0.05 * fog.density_per_m) + "*" + colour + "}}\n no_shadow}\n";
+  return text;
+}
+
+}  // namespace
+
+std::string scene_inc_text(const ExportParams& look) {
+  check_params(look);
+  const double aspect = static_cast<double>(look.width) / look.height;
+  std::string text;
+  text +=
+      "// raintrace scene.inc: camera, lights, environment and materials shared by every frame.\n"
+      "// Each frames/frame_NNNN.pov declares RT_Flash and RT_FlashPosition, then includes this.\n"
+      "#version 3.7;\n"
+      "#ifndef(RT_Mask) #declare RT_Mask=0; #end\n"
+      "#ifndef(RT_Flash) #declare RT_Flash=0; #end\n"
+      "#ifndef(RT_FlashPosition) #declare RT_FlashPosition=<0,300,200>; #end\n";
+  // Overlapping transparent streaks and refraction in drops each cost a trace level; too few
+  // levels leave black specks where rain is dense.
+  text += "global_settings{assumed_gamma 1.0 max_trace_level 32 adc_bailout 0.004}\n";
+  text += "camera{perspective location " + vec(look.camera.position) + " look_at " +
+          vec(look.camera.look_at) + " right x*" + format_number(aspect) + " up y angle " +
+          format_number(look.camera.fov_deg) + "}\n";
+  text += "#declare RT_LightningLight=" + format_number(look.lightning_light) + ";\n";
+  text += "#declare RT_CameraPosition=" + vec(look.camera.position) + ";\n";
+  text += "#include \"" + std::string{kMaterialsInclude} + "\"\n";
+  text += "#if(RT_Mask)\nbackground{rgb 0}\n#else\n";
+  text += "#declare RT_KeyLight=1;\n#include \"" + std::string{kEnvironmentInclude} + "\"\n";
+  text += fog_text(look.fog, look.camera);
+  // The flash lights the whole scene from the bolt's top; RT_KeyLight comes from the
+  // environment, so lightning_light is relative to its main light.
+  text +=
+      "#if(RT_Flash>0)\nlight_source{RT_FlashPosition color rgb "
+      "RT_Flash*RT_LightningLight*RT_KeyLight*<0.85,0.88,1>}\n#end\n#end\n";
+  return text;
+}
+
+std::string dispatcher_text(const char* prefix, int digits) {
+  const std::string p{prefix};
+  if (p != "frame" && p != "mask") throw std::invalid_argument("dispatcher prefix: " + p);
+  return "// raintrace: the animation's scene. POV-Ray sets frame_number from scene.ini's frame\n"
+         "// range; this picks that frame's file. Paths are relative to the folder (+L.).\n"
+         "#version 3.7;\n#include concat(\"frames/" +
+         p + "_\", str(frame_number, -" + std::to_string(digits) + ", 0), \".pov\")\n";
+}
+
+std::string ini_text(const ExportParams& look, int frame_count, const char* prefix,
+                     const char* dispatcher) {
+  check_params(look);
+  const std::string p{prefix};
+  const std::string d{dispatcher};
+  if ((p != "frame" || d != "scene.pov") && (p != "mask" || d != "mask.pov")) {
+    throw std::invalid_argument("ini_text: unknown prefix/dispatcher " + p + "/" + d);
+  }
+  if (frame_count < 1) throw std::invalid_argument("ini_text: frame_count must be >= 1");
+  const int digits = frame_digits(frame_count);
+  const std::string last_frame(static_cast<std::size_t>(digits), '9');
+  const bool final_quality = look.quality == Quality::final && p == "frame";
+  std::string text;
+  text += "; raintrace: run `povray " + std::string{p == "frame" ? "scene" : "mask"} +
+          ".ini` inside this folder to render the animation.\n";
+  text +=
+      "; POV-Ray pads the frame number in output names to the digit count of Final_Frame\n"
+      "; (48 frames would give images/frame_01.png). Final_Frame is therefore all nines, as\n"
+      "; many digits as the frame files, and Subset_Start_Frame/Subset_End_Frame pick the\n"
+      "; frames that exist: frame_number and the image names then match frames/*_NNNN.pov.\n"
+      "; raintrace never uses `clock`, so the stretched clock range is harmless.\n"
+      "; One range only: povray scene.ini +SF5 +EF9\n";
+  text += "Input_File_Name=" + d + "\n";
+  text += "Output_File_Name=images/" + p + "_\n";
+  text += "Output_File_Type=N\nOutput_Alpha=off\n";
+  text += "Width=" + std::to_string(look.width) + "\nHeight=" + std::to_string(look.height) + "\n";
+  text += "Library_Path=.\n";
+  text += "Initial_Frame=1\nFinal_Frame=" + last_frame + "\n";
+  text += "Subset_Start_Frame=1\nSubset_End_Frame=" + std::to_string(frame_count) + "\n";
+  text += "Cyclic_Animation=off\n";
+  // Quality 9 in both modes: lower levels drop refraction (5) or media (8), which are the rain.
+  text += "Quality=9\n";
+  if (final_quality) {
+    // Adaptive antialiasing without jitter: repeatable renders across runs and thread counts.
+    text +=
+        "Antialias=on\nSampling_Method=1\nAntialias_Threshold=0.1\nAntialias_Depth=3\n"
+        "Jitter=off\n";
+  } else {
+    text += "Antialias=off\n";
+  }
+  text += "Display=off\nPause_When_Done=off\n";
+  return text;
+}
+
+}  // namespace raintrace::povgen

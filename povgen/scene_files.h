@@ -1,0 +1,31 @@
+// Part (b) for the files shared by all frames: scene.inc (camera, lights, fog, environment and
+// materials includes), scene.pov (the frame dispatcher), scene.ini (the animation for plain
+// `povray scene.ini`), and their rain-mask twins. Pure text; nothing here touches the disk.
+#pragma once
+
+#include <string>
+
+#include "povgen/export_params.h"
+
+namespace raintrace::povgen {
+
+/// Fixed names inside the output folder. User text never chooses a name.
+inline constexpr const char* kEnvironmentInclude = "environment.inc";
+inline constexpr const char* kMaterialsInclude = "raintrace_materials.inc";
+inline constexpr const char* kStreakAtlas = "textures/streak_atlas.png";
+
+/// scene.inc for these params. Checks the params POV-Ray text depends on (finite numbers,
+/// image size in [16, 8192], a built-in environment name unless an include is used) and throws
+/// std::invalid_argument naming the field otherwise.
+std::string scene_inc_text(const ExportParams& look);
+
+/// scene.pov: includes frames/<prefix>_NNNN.pov for POV-Ray's frame_number (prefix "frame"
+/// or "mask"; digits from frame_digits()).
+std::string dispatcher_text(const char* prefix, int digits);
+
+/// scene.ini (prefix "frame", dispatcher "scene.pov") or mask.ini ("mask", "mask.pov"):
+/// renders frames 1..frame_count into images/<prefix>_NNNN.png from inside the folder.
+std::string ini_text(const ExportParams& look, int frame_count, const char* prefix,
+                     const char* dispatcher);
+
+}  // namespace raintrace::povgen

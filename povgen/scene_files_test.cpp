@@ -1,0 +1,106 @@
+// scene.inc / scene.pov / scene.ini text: frame numbering, quality, fog, and refusal of
+// values that must not reach POV-Ray.
+#include "povgen/scene_files.h"
+
+#include <gtest/gtest.h>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace raintrace::povgen {
+namespace {
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+TEST(SceneFiles, IniPadsFrameNumbersToFourDigitsWhateverTheCount) {
+  // POV-Ray pads output numbers to Final_Frame's digits: 48 frames would give frame_01.png.
+  ExportParams look;
+  const std::string ini = ini_text(look, 48, "frame", "scene.pov");
+  EXPECT_TRUE(contains(ini, "\nInput_File_Name=scene.pov\n"));
+  EXPECT_TRUE(contains(ini, "\nOutput_File_Name=images/frame_\n"));
+  EXPECT_TRUE(contains(ini, "\nInitial_Frame=1\nFinal_Frame=9999\n"));
+  EXPECT_TRUE(contains(ini, "\nSubset_Start_Frame=1\nSubset_End_Frame=48\n"));
+  EXPECT_TRUE(contains(ini, "\nLibrary_Path=.\n"));
+  EXPECT_TRUE(contains(ini, "\nWidth=640\nHeight=360\n"));
+  const std::string big = ini_text(look, 12000, "frame", "scene.pov");
+  EXPECT_TRUE(contains(big, "\nFinal_Frame=99999\n"));
+  EXPECT_TRUE(contains(dispatcher_text("frame", 5), "str(frame_number, -5, 0)"));
+}
+
+TEST(SceneFiles, QualityPicksAntialiasing) {
+  ExportParams look;
+  look.quality = Quality::preview;
+  EXPECT_TRUE(contains(ini_text(look, 1, "frame", "scene.pov"), "\nAntialias=off\n"));
+  look.quality = Quality::final;
+  const std::string final_ini = ini_text(look, 1, "frame", "scene.pov");
+  EXPECT_TRUE(contains(final_ini, "\nAntialias=on\nSampling_Method=1\n"));
+  EXPECT_TRUE(contains(final_ini, "\nJitter=off\n"));  // repeatable across runs and threads
+  // Masks stay crisp: coverage, not antialiased edges.
+  EXPECT_TRUE(contains(ini_text(look, 1, "mask", "mask.pov"), "\nAntialias=off\n"));
+}
+
+TEST(SceneFiles, DispatcherIncludesTheFrameByNumber) {
+  EXPECT_EQ(dispatcher_text("frame", 4).substr(dispatcher_text("frame", 4).find("#version")),
+            "#version 3.7;\n#include concat(\"frames/frame_\", str(frame_number, -4, 0), "
+            "\".pov\")\n");
+  EXPECT_THROW(dispatcher_text("x\"#system", 4), std::invalid_argument);
+  EXPECT_THROW(ini_text(ExportParams{}, 1, "frame", "evil.pov"), std::invalid_argument);
+}
+
+TEST(SceneFiles, SceneIncHasTheCameraAndMaterials) {
+  ExportParams look;
+  look.width = 320;
+  look.height = 240;
+  const std::string inc = scene_inc_text(look);
+  // Camera (0, 1.6, −5) → (0, 1.6, 0), aspect 320/240 = 1.333333, fov 60.
+  EXPECT_TRUE(contains(inc,
+                       "camera{perspective location <0,1.6,-5> look_at <0,1.6,0> "
+                       "right x*1.333333 up y angle 60}"));
+  EXPECT_TRUE(contains(inc, "#include \"raintrace_materials.inc\""));
+  EXPECT_TRUE(contains(inc, "#include \"environment.inc\""));
+  EXPECT_TRUE(contains(inc, "#declare RT_LightningLight=8;"));
+  EXPECT_FALSE(contains(inc, "fog{"));
+  EXPECT_FALSE(contains(inc, "media{"));
+}
+
+TEST(SceneFiles, FogModes) {
+  ExportParams look;
+  look.fog.mode = FogMode::ground;
+  look.fog.density_per_m = 0.05;
+  look.fog.depth_m = 4.0;
+  // distance = 1/density = 20 m: fog reaches 1 − e^-1 there.
+  EXPECT_TRUE(contains(scene_inc_text(look), "fog{fog_type 2 distance 20 "));
+  EXPECT_TRUE(contains(scene_inc_text(look), "fog_alt 4 up y}"));
+  look.fog.mode = FogMode::media;
+  const std::string media = scene_inc_text(look);
+  // Hollow container of radius depth around the camera; scattering 0.7·0.05, absorption 0.3·0.05.
+  EXPECT_TRUE(contains(media, "sphere{<0,1.6,-5>,4 hollow"));
+  EXPECT_TRUE(contains(media, "scattering{1,rgb 0.035*"));
+  EXPECT_TRUE(contains(media, "absorption rgb 0.015"));
+  EXPECT_TRUE(contains(media, "jitter 0"));
+  look.fog.density_per_m = 0.0;
+  EXPECT_FALSE(contains(scene_inc_text(look), "media{"));
+}
+
+TEST(SceneFiles, HostileValuesAreRefused) {
+  ExportParams look;
+  look.camera.position.x = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(scene_inc_text(look), std::invalid_argument);
+  look = ExportParams{};
+  look.fog.density_per_m = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(scene_inc_text(look), std::invalid_argument);
+  look = ExportParams{};
+  look.width = 10;
+  EXPECT_THROW(scene_inc_text(look), std::invalid_argument);
+  for (const char* name : {"night_street\"\n#system(\"rm -rf ~\")", "#fopen F \"/etc/passwd\" read",
+                           "../../etc/passwd", "field\n", "", "NIGHT_STREET"}) {
+    look = ExportParams{};
+    look.environment.name = name;
+    EXPECT_THROW(scene_inc_text(look), std::invalid_argument) << name;
+  }
+}
+
+}  // namespace
+}  // namespace raintrace::povgen

@@ -1,0 +1,89 @@
+// Built-in templates and the user include checks: hostile names and paths are rejected.
+#include "povgen/templates.h"
+
+#include <gtest/gtest.h>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace raintrace::povgen {
+namespace {
+
+namespace fs = std::filesystem;
+
+class UserInclude : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    m_root = fs::temp_directory_path() / "raintrace_templates_test";
+    fs::remove_all(m_root);
+    fs::create_directories(m_root / "scene" / "inc");
+    std::ofstream(m_root / "scene" / "inc" / "mine.inc") << "sphere{0,1}\n";
+    std::ofstream(m_root / "outside.inc") << "#system(\"evil\")\n";
+  }
+  void TearDown() override { fs::remove_all(m_root); }
+  fs::path scene_dir() const { return m_root / "scene"; }
+  fs::path m_root;
+};
+
+TEST(Templates, BuiltinsAreEmbeddedAndMatchTheSourceFiles) {
+  for (const std::string& name : builtin_environments()) {
+    std::ifstream in(fs::path{RAINTRACE_TEMPLATES_DIR} / (name + ".inc"), std::ios::binary);
+    const std::string file{std::istreambuf_iterator<char>(in), {}};
+    EXPECT_EQ(environment_template(name), file) << name << ": re-run CMake after editing";
+  }
+  std::ifstream in(fs::path{RAINTRACE_TEMPLATES_DIR} / "raintrace_materials.inc");
+  EXPECT_EQ(materials_template(), std::string(std::istreambuf_iterator<char>(in), {}));
+  EXPECT_NE(materials_template().find("#declare RT_DropMaterial"), std::string::npos);
+}
+
+TEST(Templates, HostileEnvironmentNamesAreRejected) {
+  for (const char* name : {"night_street\"", "#system(\"id\")", "../field", "field\n#fopen",
+                           "field ", "/etc/passwd", ""}) {
+    EXPECT_THROW(environment_template(name), std::invalid_argument) << name;
+  }
+}
+
+TEST(Templates, MessagesNeverCarryControlCharacters) {
+  try {
+    environment_template("bad\nname\x1b[31m");
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.find('\n'), std::string::npos);
+    EXPECT_EQ(what.find('\x1b'), std::string::npos);
+  }
+}
+
+TEST_F(UserInclude, IncludeInsideTheSceneFolderIsCopied) {
+  EnvironmentParams env;
+  env.include_path = "inc/mine.inc";
+  EXPECT_EQ(environment_text(env, scene_dir()), "sphere{0,1}\n");
+}
+
+TEST_F(UserInclude, PathsLeavingTheSceneFolderAreRejected) {
+  EnvironmentParams env;
+  for (const std::string& path :
+       std::vector<std::string>{"../outside.inc", "inc/../../outside.inc",
+                                (m_root / "outside.inc").string(), "inc/missing.inc", "inc"}) {
+    env.include_path = path;
+    EXPECT_THROW(environment_text(env, scene_dir()), std::invalid_argument) << path;
+  }
+}
+
+TEST_F(UserInclude, SymlinksOutOfTheSceneFolderAreRejected) {
+  fs::create_symlink(m_root / "outside.inc", scene_dir() / "inc" / "link.inc");
+  EnvironmentParams env;
+  env.include_path = "inc/link.inc";
+  EXPECT_THROW(environment_text(env, scene_dir()), std::invalid_argument);
+}
+
+TEST_F(UserInclude, EmptyPathUsesTheBuiltin) {
+  EnvironmentParams env;
+  env.name = "field";
+  EXPECT_EQ(environment_text(env, scene_dir()), environment_template("field"));
+}
+
+}  // namespace
+}  // namespace raintrace::povgen
