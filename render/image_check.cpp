@@ -3,8 +3,29 @@
 
 #include <OpenImageIO/imagebuf.h>
 #include <fmt/core.h>
+#include <array>
+#include <fstream>
 
 namespace raintrace::render {
+namespace {
+
+// A PNG ends with its IEND chunk: length 0, "IEND", CRC AE 42 60 82. Checking these 12 bytes
+// first skips decoding files POV-Ray is still writing (and libpng's stderr noise about them).
+bool png_has_end(const std::filesystem::path& path) {
+  std::ifstream in{path, std::ios::binary | std::ios::ate};
+  if (!in || in.tellg() < 12) return false;
+  in.seekg(-12, std::ios::end);
+  std::array<char, 12> tail{};
+  in.read(tail.data(), tail.size());
+  static constexpr std::array<unsigned char, 12> kIend{0,   0,   0,    0,    'I',  'E',
+                                                       'N', 'D', 0xAE, 0x42, 0x60, 0x82};
+  for (std::size_t i = 0; i < tail.size(); ++i) {
+    if (static_cast<unsigned char>(tail[i]) != kIend[i]) return false;
+  }
+  return true;
+}
+
+}  // namespace
 
 bool image_is_complete(const std::filesystem::path& path, int width, int height, std::string* why) {
   auto fail = [&](std::string reason) {
@@ -13,6 +34,7 @@ bool image_is_complete(const std::filesystem::path& path, int width, int height,
   };
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) return fail("missing");
+  if (path.extension() == ".png" && !png_has_end(path)) return fail("incomplete PNG (no IEND)");
   OIIO::ImageBuf buf{path.string()};
   if (!buf.read(0, 0, /*force=*/true)) return fail("unreadable: " + buf.geterror());
   const auto& spec = buf.spec();

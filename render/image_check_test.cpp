@@ -1,0 +1,43 @@
+// Only whole images at the right size count as finished.
+#include "render/image_check.h"
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <gtest/gtest.h>
+#include <fstream>
+#include <sstream>
+
+#include "render/test_folder.h"
+
+namespace raintrace::render {
+namespace {
+
+TEST(ImageIsComplete, AcceptsWholeImageRejectsTruncatedWrongSizeAndMissing) {
+  const auto dir = testing::fresh_test_dir("check");
+  OIIO::ImageBuf img{OIIO::ImageSpec{64, 36, 3, OIIO::TypeDesc::UINT8}};
+  OIIO::ImageBufAlgo::noise(img, "uniform", 0.0f, 1.0f);  // incompressible, so the file is big
+  ASSERT_TRUE(img.write((dir / "whole.png").string()));
+  EXPECT_TRUE(image_is_complete(dir / "whole.png", 64, 36));
+  std::string why;
+  EXPECT_FALSE(image_is_complete(dir / "whole.png", 64, 37, &why));
+  EXPECT_EQ(why, "64x36 instead of 64x37");
+  EXPECT_FALSE(image_is_complete(dir / "missing.png", 64, 36, &why));
+  EXPECT_EQ(why, "missing");
+
+  // The file as a killed writer leaves it: every prefix is rejected.
+  std::ifstream in{dir / "whole.png", std::ios::binary};
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  const std::string whole = bytes.str();
+  for (std::size_t cut : {whole.size() / 4, whole.size() / 2, whole.size() - 1}) {
+    std::ofstream{dir / "cut.png", std::ios::binary} << whole.substr(0, cut);
+    EXPECT_FALSE(image_is_complete(dir / "cut.png", 64, 36)) << cut;
+  }
+  // Even with a valid ending glued on, a missing middle fails the full decode.
+  std::ofstream{dir / "hole.png", std::ios::binary} << whole.substr(0, whole.size() / 2)
+                                                    << whole.substr(whole.size() - 12);
+  EXPECT_FALSE(image_is_complete(dir / "hole.png", 64, 36));
+}
+
+}  // namespace
+}  // namespace raintrace::render
