@@ -1,0 +1,55 @@
+// Cluster backend: the exported folder rendered as one Slurm job array. Each array task runs
+// `raintrace render --slurm-task OUT` on a node, which renders its share of frames with the
+// same runner as the local backend (verify, then rename) and drops one small result file per
+// frame in OUT/slurm/results/. Only the submitting raintrace writes manifest.json: it merges
+// result files as they appear, so tasks never race on the manifest and a re-run after an
+// interruption picks up results that landed meanwhile. OUT must be on a filesystem every node
+// sees at the same path, and so must the raintrace binary.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "render/local_render.h"
+
+namespace raintrace::render {
+
+struct SlurmRenderSettings {
+  int tasks = 0;                        ///< array size; 0 = one task per ~8 frames, at most 64
+  std::string partition;                ///< sbatch --partition; empty = the cluster's default
+  std::filesystem::path raintrace_exe;  ///< absolute path the nodes run for each task
+  bool force = false;
+  bool mask = false;
+  std::optional<FrameSpan> only;
+  double poll_seconds = 1.0;                ///< how often squeue and the results folder are checked
+  const std::atomic<bool>* stop = nullptr;  ///< set → scancel the job, keep finished frames
+  std::function<void(const RenderProgress&)> on_progress;
+  std::function<void(const FrameFailure&)> on_failed;
+  std::function<void(const std::string&)> on_status;  ///< "submitted job 12 (4 tasks)", …
+};
+
+/// One task's share: spans of images and of masks.
+struct SlurmTaskPlan {
+  std::vector<FrameSpan> images;
+  std::vector<FrameSpan> masks;
+};
+
+/// Splits frames into `tasks` contiguous, nearly equal shares (fewer when there are fewer frames).
+std::vector<std::vector<int>> share_frames(const std::vector<int>& frames, int tasks);
+
+/// The batch script: `#SBATCH --array=0-(tasks-1)`, logs in OUT/logs/slurm_%A_%a.out, runs
+/// `raintrace_exe render --slurm-task OUT`.
+std::string sbatch_script(const std::filesystem::path& out_dir,
+                          const std::filesystem::path& raintrace_exe, int tasks);
+
+/// Submits, follows and merges; throws std::runtime_error when sbatch is missing or refuses.
+RenderSummary render_slurm(const std::filesystem::path& out_dir,
+                           const SlurmRenderSettings& settings);
+
+/// The worker inside one array task (SLURM_ARRAY_TASK_ID selects its share). Returns 0 when all
+/// its frames rendered, 1 otherwise; throws when the plan or manifest is unusable.
+int run_slurm_task(const std::filesystem::path& out_dir, int task_index,
+                   const std::atomic<bool>* stop = nullptr);
+
+}  // namespace raintrace::render
