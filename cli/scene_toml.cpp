@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "cli/scene.h"
+#include "cli/scene_ascii.h"
 #include "cli/scene_document.h"
 #include "cli/scene_error.h"
 
@@ -77,6 +78,12 @@ SceneNode convert(const toml::node& node) {
 }  // namespace
 
 SceneNode parse_scene_document(std::string_view text, const std::string& source_name) {
+  // toml++ 3.3.0 has undefined behaviour on some non-ASCII text (scene_ascii.h).
+  if (const auto where = first_non_ascii_outside_comments(text)) {
+    throw SceneError(scene_error_text(
+        source_name, *where, "syntax error",
+        "non-ASCII character outside a comment (keys and values are plain ASCII)"));
+  }
   toml::table root;
   try {
     root = toml::parse(text, source_name);
