@@ -90,7 +90,11 @@ FrameValues build_frame_values(const sim::Frame& frame, const ExportParams& look
     const float diameter = drops.diameter[i];
     const float opacity = has_opacity ? drops.opacity[i] : 1.0f;
     if (!(opacity > 0.0f) || !(diameter > 0.0f)) continue;
-    if (glm::length(p - view.eye()) < split) {
+    // Near drops are refractive spheres, but only once they cover a pixel: a sub-pixel sphere
+    // is hit by a ray or missed entirely, which speckles the image, and a drop that small
+    // shows as its motion streak anyway.
+    if (glm::length(p - view.eye()) < split &&
+        diameter >= view.pixel_size(std::max(view.depth(p), 1e-3f), look.width)) {
       const float radius = 0.5f * diameter;
       if (!view.sphere_visible(p, radius)) continue;
       const auto ratio = static_cast<float>(drop_axis_ratio(diameter));

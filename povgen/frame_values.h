@@ -47,7 +47,9 @@ struct FrameValues {
   glm::vec3 flash_position{0.0f};  ///< where the lightning light sits
 };
 
-/// Builds the values of one frame. Drops and droplets wholly outside the view are dropped;
+/// Builds the values of one frame. Drops nearer than look.sphere_distance_m that are at least
+/// one pixel across become spheres, all others streaks. Drops and droplets wholly outside the
+/// view are dropped;
 /// a streak narrower (or shorter) than one pixel is widened to a pixel and made fainter by the
 /// same factor, so distant rain keeps its light without antialiasing. Throws
 /// std::invalid_argument if the camera is degenerate or a value is not finite.

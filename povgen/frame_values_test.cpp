@@ -53,17 +53,22 @@ TEST(FrameValues, DropsOutsideTheViewAreNotWritten) {
   add_drop(frame, {0.0f, 20.0f, 5.0f}, {0.0f, -9.0f, 0.0f}, 2e-3f);   // above
   add_drop(frame, {0.1f, 1.5f, -3.0f}, {0.0f, -9.0f, 0.0f}, 2e-3f);   // in view, near
   add_drop(frame, {-2.0f, 1.6f, -3.5f}, {0.0f, -9.0f, 0.0f}, 2e-3f);  // near, left of view
-  const FrameValues values = build_frame_values(frame, default_look());
+  // 8192 px wide: a pixel at depth 2 m is 2·2·tan30°/8192 = 0.28 mm, so the 2 mm drop is a sphere.
+  ExportParams look = default_look();
+  look.width = 8192;
+  look.height = 4608;
+  const FrameValues values = build_frame_values(frame, look);
   EXPECT_EQ(values.streaks.size(), 1u);
   ASSERT_EQ(values.drops.size(), 1u);
   EXPECT_FLOAT_EQ(values.drops[0].centre.x, 0.1f);
 }
 
 TEST(FrameValues, NearFarSplitFollowsSphereDistance) {
-  // Distances from the eye (0, 1.6, −5): 2.9 m and 3.1 m along the view axis.
+  // Distances from the eye (0, 1.6, −5): 2.9 m and 3.1 m along the view axis. 5 mm drops: a
+  // pixel at 2.9 m is 2·2.9·tan30°/640 = 5.2 mm, so 6 mm drops are wider than a pixel.
   sim::Frame frame;
-  add_drop(frame, {0.0f, 1.6f, -2.1f}, {0.0f, -9.0f, 0.0f}, 1e-3f);
-  add_drop(frame, {0.0f, 1.6f, -1.9f}, {0.0f, -9.0f, 0.0f}, 1e-3f);
+  add_drop(frame, {0.0f, 1.6f, -2.1f}, {0.0f, -9.0f, 0.0f}, 6e-3f);
+  add_drop(frame, {0.0f, 1.6f, -1.9f}, {0.0f, -9.0f, 0.0f}, 6e-3f);
   ExportParams look = default_look();
   look.sphere_distance_m = 3.0;
   FrameValues values = build_frame_values(frame, look);
@@ -79,7 +84,10 @@ TEST(FrameValues, LargeNearDropsAreFlattenedAtEqualVolume) {
   sim::Frame frame;
   add_drop(frame, {0.0f, 1.6f, -4.0f}, {0.0f, -9.0f, 0.0f}, 5e-3f);
   add_drop(frame, {0.1f, 1.6f, -4.0f}, {0.0f, -2.0f, 0.0f}, 0.5e-3f);
-  const FrameValues values = build_frame_values(frame, default_look());
+  ExportParams look = default_look();  // a pixel at 1 m: 2·tan30°/8192 = 0.14 mm
+  look.width = 8192;
+  look.height = 4608;
+  const FrameValues values = build_frame_values(frame, look);
   ASSERT_EQ(values.drops.size(), 2u);
   const SphereValue& big = values.drops[0];
   // Beard-Chuang at 5 mm: 0.7060875. Equal volume: a²·b = R³ with b = ratio·a.
@@ -88,6 +96,15 @@ TEST(FrameValues, LargeNearDropsAreFlattenedAtEqualVolume) {
   EXPECT_NEAR(a * a * a * big.axis_ratio, 2.5e-3 * 2.5e-3 * 2.5e-3, 1e-12);
   // 0.5 mm drops are round to 0.1 % and written as bare spheres.
   EXPECT_EQ(values.drops[1].axis_ratio, 1.0f);
+}
+
+TEST(FrameValues, SubPixelNearDropsBecomeStreaks) {
+  // 1 mm drop 2 m away at 640 px: a pixel is 2·2·tan30°/640 = 3.6 mm, the drop far smaller.
+  sim::Frame frame;
+  add_drop(frame, {0.0f, 1.6f, -3.0f}, {0.0f, -9.0f, 0.0f}, 1e-3f);
+  const FrameValues values = build_frame_values(frame, default_look());
+  EXPECT_TRUE(values.drops.empty());
+  EXPECT_EQ(values.streaks.size(), 1u);
 }
 
 TEST(FrameValues, StreakLengthFollowsExposureAndFacesTheCamera) {
