@@ -4,6 +4,7 @@
 #include "render/process.h"
 
 #include <fcntl.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <cerrno>
@@ -60,6 +61,7 @@ pid_t spawn(const ProcessSpec& spec, int stdout_fd) {
   if (log_fd < 0) {
     throw std::system_error(errno, std::generic_category(), "cannot open log " + log);
   }
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) {
     ::close(log_fd);
@@ -67,6 +69,10 @@ pid_t spawn(const ProcessSpec& spec, int stdout_fd) {
   }
   if (pid == 0) {
     ::setpgid(0, 0);
+    // Children live in their own group (a terminal's Ctrl-C reaches only raintrace), so they
+    // would survive a SIGKILL of raintrace: have the kernel kill them when the parent dies.
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(127);
     // The parent may block these for its own handling; a child starts with defaults.
     sigset_t none;
     sigemptyset(&none);

@@ -2,6 +2,8 @@
 #include "render/process.h"
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <csignal>
 #include <fstream>
 #include <sstream>
@@ -69,6 +71,33 @@ TEST(ChildProcess, StopKillsTheWholeGroupIncludingGrandchildren) {
   EXPECT_TRUE(child.poll().has_value());
   std::this_thread::sleep_for(std::chrono::milliseconds(100));
   EXPECT_FALSE(is_running(grandchild));  // no POV-Ray outlives an interrupted render
+}
+
+TEST(ChildProcess, DiesWithItsParent) {
+  const auto dir = testing::fresh_test_dir("orphan");
+  // An intermediate process starts the child through ChildProcess, then is SIGKILLed the way a
+  // user might kill raintrace; the grandchild (a stand-in for POV-Ray) must not live on.
+  const pid_t middle = ::fork();
+  ASSERT_GE(middle, 0);
+  if (middle == 0) {
+    ProcessSpec spec;
+    spec.argv = {"sh", "-c", "echo $$ > child; exec sleep 30"};
+    spec.working_dir = dir;
+    ChildProcess child{spec};
+    ::pause();
+    ::_exit(0);
+  }
+  pid_t child = 0;
+  for (int i = 0; i < 100 && child == 0; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    std::ifstream{dir / "child"} >> child;
+  }
+  ASSERT_GT(child, 0);
+  ASSERT_TRUE(is_running(child));
+  ::kill(middle, SIGKILL);
+  ::waitpid(middle, nullptr, 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  EXPECT_FALSE(is_running(child));
 }
 
 TEST(RunCapture, ReturnsStdoutAndExitCode) {

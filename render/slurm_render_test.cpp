@@ -1,0 +1,133 @@
+// Slurm backend: planning helpers (always), and a real job array on a one-node cluster that must
+// produce the same pixels as the local backend (label slurm).
+#include "render/slurm_render.h"
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+#include <cstdlib>
+
+#include "povgen/manifest.h"
+#include "render/process.h"
+#include "render/test_folder.h"
+
+namespace raintrace::render {
+namespace {
+
+TEST(ShareFrames, SplitsIntoNearlyEqualContiguousShares) {
+  // 10 frames over 4 tasks: boundaries at floor(t·10/4) = 0, 2, 5, 7, 10 → sizes 2, 3, 2, 3.
+  const auto shares = share_frames({1, 2, 3, 4, 5, 6, 7, 8, 9, 10}, 4);
+  ASSERT_EQ(shares.size(), 4U);
+  EXPECT_EQ(shares[0], (std::vector<int>{1, 2}));
+  EXPECT_EQ(shares[1], (std::vector<int>{3, 4, 5}));
+  EXPECT_EQ(shares[3], (std::vector<int>{8, 9, 10}));
+  EXPECT_EQ(share_frames({4, 5}, 8).size(), 2U);  // never an empty task
+}
+
+TEST(SbatchScript, IsAnArrayRunningTheWorkerInTheOutputFolder) {
+  const auto script = sbatch_script("/shared/out", "/opt/raintrace", 6);
+  EXPECT_NE(script.find("#SBATCH --array=0-5\n"), std::string::npos);
+  EXPECT_NE(script.find("#SBATCH --chdir=/shared/out\n"), std::string::npos);
+  EXPECT_NE(script.find("#SBATCH --output=/shared/out/logs/slurm_%A_%a.out\n"), std::string::npos);
+  EXPECT_NE(script.find("exec '/opt/raintrace' render --slurm-task '/shared/out'\n"),
+            std::string::npos);
+}
+
+// Uses a running cluster, or (as root) starts a one-node one with the recipe and stops it after.
+class SlurmRender : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    if (!find_program("sbatch") || !find_program("sinfo")) return;
+    if (cluster_up()) {
+      s_ready = true;
+      return;
+    }
+    const char* recipe_env = std::getenv("RAINTRACE_SLURM_RECIPE");
+    const std::filesystem::path recipe =
+        recipe_env != nullptr ? recipe_env : "/work/shared/recipes/slurm-localhost.sh";
+    if (::geteuid() != 0 || !std::filesystem::exists(recipe)) return;
+    s_cluster_dir = testing::fresh_test_dir("slurm_cluster");
+    ProcessSpec start;
+    start.argv = {recipe.string(), "start", s_cluster_dir.string()};
+    start.log_path = s_cluster_dir.string() + ".log";
+    s_started = ChildProcess{start}.wait() == 0;
+    s_ready = s_started && cluster_up();
+  }
+  static void TearDownTestSuite() {
+    if (!s_started) return;
+    ProcessSpec stop;
+    stop.argv = {"/work/shared/recipes/slurm-localhost.sh", "stop", s_cluster_dir.string()};
+    if (const char* r = std::getenv("RAINTRACE_SLURM_RECIPE")) stop.argv[0] = r;
+    ChildProcess{stop}.wait();
+  }
+  static bool cluster_up() {
+    ProcessSpec spec;
+    spec.argv = {"sinfo", "-h", "-o", "%T"};
+    const auto r = run_capture(spec);
+    return r.exit_code == 0 && r.out.find("idle") != std::string::npos;
+  }
+  void SetUp() override {
+    if (!find_program("povray")) GTEST_SKIP() << "POV-Ray not installed (apt-get install povray)";
+    if (!s_ready) {
+      GTEST_SKIP() << "no Slurm cluster: needs sbatch/sinfo and an idle node, or root to start "
+                      "one with shared/recipes/slurm-localhost.sh";
+    }
+  }
+  static inline bool s_ready = false;
+  static inline bool s_started = false;
+  static inline std::filesystem::path s_cluster_dir;
+};
+
+TEST_F(SlurmRender, JobArrayRendersTheSamePixelsAsLocal) {
+  const auto dir = testing::fresh_test_dir("slurm_same");
+  testing::write_test_folder(dir / "local", {.frames = 6});
+  testing::write_test_folder(dir / "slurm", {.frames = 6});
+  LocalRenderSettings local;
+  local.jobs = 2;
+  ASSERT_TRUE(render_local(dir / "local", local).failures.empty());
+
+  SlurmRenderSettings settings;
+  settings.tasks = 3;
+  settings.raintrace_exe = RAINTRACE_BINARY;
+  settings.poll_seconds = 0.3;
+  int last_done = 0;
+  settings.on_progress = [&](const RenderProgress& p) { last_done = p.done; };
+  const auto summary = render_slurm(dir / "slurm", settings);
+  ASSERT_TRUE(summary.failures.empty()) << summary.failures[0].summary();
+  EXPECT_EQ(last_done, 6);
+  const auto manifest = povgen::read_manifest(dir / "slurm/manifest.json");
+  for (const auto& f : manifest.frames) {
+    EXPECT_EQ(f.status, "rendered");
+    EXPECT_EQ(f.rendered_hash, f.input_hash);
+    // PNG bytes differ by timestamps (POVRAY-NOTES): compare decoded pixels exactly.
+    OIIO::ImageBuf a{(dir / "local" / f.image).string()};
+    OIIO::ImageBuf b{(dir / "slurm" / f.image).string()};
+    const auto cmp = OIIO::ImageBufAlgo::compare(a, b, 0.0f, 0.0f);
+    EXPECT_FALSE(cmp.error) << f.image;
+    EXPECT_EQ(cmp.nfail, 0U) << f.image;
+    EXPECT_EQ(cmp.maxerror, 0.0) << f.image;
+  }
+  // A second submission finds nothing to do and submits nothing.
+  EXPECT_EQ(render_slurm(dir / "slurm", settings).progress.total, 0);
+}
+
+TEST_F(SlurmRender, AFailingFrameIsReportedFromItsTask) {
+  const auto dir = testing::fresh_test_dir("slurm_fail");
+  testing::write_test_folder(dir / "out", {.frames = 4});
+  testing::replace_frame(dir / "out", 2, "#include \"scene.inc\"\nsphere { <0,0,0> oops }\n");
+  SlurmRenderSettings settings;
+  settings.tasks = 2;
+  settings.raintrace_exe = RAINTRACE_BINARY;
+  settings.poll_seconds = 0.3;
+  const auto summary = render_slurm(dir / "out", settings);
+  ASSERT_EQ(summary.failures.size(), 1U);
+  EXPECT_EQ(summary.failures[0].frame, 2);
+  EXPECT_EQ(summary.failures[0].error_lines.at(0).rfind("File 'frames/frame_0002.pov' line 2", 0),
+            0U);
+  EXPECT_EQ(summary.progress.done, 3);
+  EXPECT_EQ(povgen::read_manifest(dir / "out/manifest.json").frames[1].status, "failed");
+}
+
+}  // namespace
+}  // namespace raintrace::render

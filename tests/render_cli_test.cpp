@@ -1,0 +1,188 @@
+// `raintrace render` end to end, as a user runs it: exit codes, progress lines when stderr is
+// not a terminal, failure reports, SIGINT and SIGKILL in the middle of a render.
+#include <gtest/gtest.h>
+#include <chrono>
+#include <csignal>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <thread>
+
+#include "povgen/manifest.h"
+#include "render/image_check.h"
+#include "render/povray_command.h"
+#include "render/process.h"
+#include "render/test_folder.h"
+
+namespace raintrace::render {
+namespace {
+
+std::string read_all(const std::filesystem::path& p) {
+  std::ifstream in{p};
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+struct Run {
+  int exit_code = 0;
+  std::string output;  // stdout and stderr together, as a log file (not a terminal) gets them
+};
+
+ProcessSpec raintrace_spec(const std::vector<std::string>& args, const std::filesystem::path& log) {
+  ProcessSpec spec;
+  spec.argv = {RAINTRACE_BINARY};
+  spec.argv.insert(spec.argv.end(), args.begin(), args.end());
+  spec.log_path = log;
+  return spec;
+}
+
+Run run_raintrace(const std::vector<std::string>& args, const std::filesystem::path& log) {
+  ChildProcess child{raintrace_spec(args, log)};
+  Run r;
+  r.exit_code = child.wait();
+  r.output = read_all(log);
+  return r;
+}
+
+int rendered_in_manifest(const std::filesystem::path& dir) {
+  try {
+    int n = 0;
+    for (const auto& f : povgen::read_manifest(dir / "manifest.json").frames) {
+      n += f.status == "rendered" ? 1 : 0;
+    }
+    return n;
+  } catch (const std::exception&) {
+    return 0;
+  }
+}
+
+class PovrayRenderCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!find_program("povray")) GTEST_SKIP() << "POV-Ray not installed (apt-get install povray)";
+  }
+};
+
+TEST_F(PovrayRenderCli, RendersAFolderPrintsPlainProgressLinesAndTheOutputs) {
+  const auto dir = testing::fresh_test_dir("cli_ok");
+  testing::write_test_folder(dir / "out", {.frames = 4});
+  const auto r = run_raintrace({"render", (dir / "out").string(), "--jobs", "2"}, dir / "log");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  // Not a terminal: one plain line per finished frame, no carriage returns or escapes.
+  for (int k = 1; k <= 4; ++k) {
+    EXPECT_NE(r.output.find("render: " + std::to_string(k) + "/4 frames done"), std::string::npos)
+        << r.output;
+  }
+  EXPECT_EQ(r.output.find('\r'), std::string::npos);
+  EXPECT_EQ(r.output.find("\x1b["), std::string::npos);
+  EXPECT_NE(r.output.find("contact sheet: "), std::string::npos);
+  EXPECT_TRUE(image_is_complete(dir / "out/contact_sheet.png", 4 + 2 * (64 + 4),
+                                4 + 2 * (36 + 12 + 4)));  // 4 frames → 2×2 grid, labels 12 px
+  for (int f = 1; f <= 4; ++f) {
+    EXPECT_TRUE(image_is_complete(dir / "out" / final_image_name(Pass::image, f), 64, 36));
+  }
+  // Second run: nothing to do, still success.
+  const auto again = run_raintrace({"render", (dir / "out").string()}, dir / "log2");
+  EXPECT_EQ(again.exit_code, 0);
+  EXPECT_NE(again.output.find("0 frames rendered, 4 up to date, 0 failed"), std::string::npos)
+      << again.output;
+}
+
+TEST_F(PovrayRenderCli, FailedFrameIsReportedWithCommandExitCodeAndPovrayErrorAndExitsOne) {
+  const auto dir = testing::fresh_test_dir("cli_fail");
+  testing::write_test_folder(dir / "out", {.frames = 5});
+  testing::replace_frame(dir / "out", 3, "#include \"scene.inc\"\nsphere { <0,0,0> oops }\n");
+  const auto r = run_raintrace({"render", (dir / "out").string(), "--no-movie"}, dir / "log");
+  EXPECT_EQ(r.exit_code, 1) << r.output;  // cli/exit_codes.h: failed
+  EXPECT_NE(r.output.find("frame 3 failed: POV-Ray exited with code 1"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("command: cd "), std::string::npos);
+  EXPECT_NE(r.output.find("povray scene.ini"), std::string::npos);
+  EXPECT_NE(r.output.find("File 'frames/frame_0003.pov' line 2: Parse Error"), std::string::npos);
+  EXPECT_NE(r.output.find("4 frames rendered, 0 up to date, 1 failed"), std::string::npos);
+}
+
+TEST_F(PovrayRenderCli, MissingPovrayIsOneClearLineAndExitTwo) {
+  const auto dir = testing::fresh_test_dir("cli_nopov");
+  testing::write_test_folder(dir / "out", {.frames = 1});
+  auto spec = raintrace_spec({"render", (dir / "out").string()}, dir / "log");
+  spec.env["PATH"] = (dir / "empty-path").string();
+  ChildProcess child{spec};
+  EXPECT_EQ(child.wait(), 2);
+  EXPECT_EQ(read_all(dir / "log"),
+            "raintrace: error: POV-Ray not found: install it with `sudo apt-get install povray`\n");
+}
+
+// Renders 10 slow frames in the background and returns once `frames_done` are recorded.
+std::unique_ptr<ChildProcess> start_slow_render(const std::filesystem::path& dir, int frames_done) {
+  testing::write_test_folder(dir / "out", {.frames = 10, .spheres = 6000});
+  auto child = std::make_unique<ChildProcess>(
+      raintrace_spec({"render", (dir / "out").string(), "--jobs", "1", "--no-movie"}, dir / "log"));
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (rendered_in_manifest(dir / "out") < frames_done &&
+         std::chrono::steady_clock::now() < deadline && !child->poll()) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return child;
+}
+
+TEST_F(PovrayRenderCli, SigkillHalfwayThenRerunFinishesWithoutRedoingFinishedFrames) {
+  const auto dir = testing::fresh_test_dir("cli_kill");
+  auto child = start_slow_render(dir, 3);
+  ASSERT_TRUE(child);
+  ASSERT_FALSE(child->poll().has_value()) << read_all(dir / "log");
+  ::kill(child->pid(), SIGKILL);
+  EXPECT_EQ(child->wait(), 128 + SIGKILL);
+
+  const auto before = povgen::read_manifest(dir / "out/manifest.json");
+  std::map<int, std::filesystem::file_time_type> finished;
+  for (const auto& f : before.frames) {
+    if (f.status != "rendered") continue;
+    finished[f.number] = std::filesystem::last_write_time(dir / "out" / f.image);
+    EXPECT_TRUE(image_is_complete(dir / "out" / f.image, 64, 36));
+  }
+  ASSERT_GE(finished.size(), 3U);
+  ASSERT_LT(finished.size(), 10U);
+  // Whatever the killed run left at final names is complete; the rest only at temp names.
+  for (int f = 1; f <= 10; ++f) {
+    const auto image = dir / "out" / final_image_name(Pass::image, f);
+    if (std::filesystem::exists(image)) {
+      EXPECT_TRUE(image_is_complete(image, 64, 36)) << f;
+    }
+  }
+
+  const auto r = run_raintrace({"render", (dir / "out").string(), "--no-movie"}, dir / "log2");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  const int redo = 10 - static_cast<int>(finished.size());
+  EXPECT_NE(r.output.find(std::to_string(redo) + " frames rendered, " +
+                          std::to_string(finished.size()) + " up to date"),
+            std::string::npos)
+      << r.output;
+  for (const auto& [frame, mtime] : finished) {
+    EXPECT_EQ(std::filesystem::last_write_time(dir / "out" / final_image_name(Pass::image, frame)),
+              mtime)
+        << "frame " << frame << " was rendered again";
+  }
+  for (int f = 1; f <= 10; ++f) {
+    EXPECT_TRUE(image_is_complete(dir / "out" / final_image_name(Pass::image, f), 64, 36)) << f;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "out/images/.tmp") &&
+               !std::filesystem::is_empty(dir / "out/images/.tmp"));
+}
+
+TEST_F(PovrayRenderCli, SigintStopsPovrayKeepsFramesAndSaysHowToResume) {
+  const auto dir = testing::fresh_test_dir("cli_int");
+  auto child = start_slow_render(dir, 2);
+  ASSERT_FALSE(child->poll().has_value()) << read_all(dir / "log");
+  ::kill(child->pid(), SIGINT);
+  EXPECT_EQ(child->wait(), 128 + SIGINT);
+  const std::string out = read_all(dir / "log");
+  EXPECT_NE(out.find("interrupted by SIGINT"), std::string::npos) << out;
+  EXPECT_NE(out.find("run the same command again to resume"), std::string::npos);
+  EXPECT_GE(rendered_in_manifest(dir / "out"), 2);
+}
+
+}  // namespace
+}  // namespace raintrace::render
