@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Renders the reference frames of one example, the one recipe shared by the reference test and
+# update.sh: a copy of the scene at 160×90, preview quality (no antialiasing, so no jitter) and
+# frames 1..N, exported with `raintrace export`, then rendered by plain `povray scene.ini` in the
+# output folder (DESIGN.md: the folder renders without raintrace). Leaves WORKDIR/out/images/.
+# Usage: render_example.sh RAINTRACE EXAMPLE.toml WORKDIR [FRAMES=2]
+set -euo pipefail
+raintrace=$1
+example=$2
+work=$3
+frames=${4:-2}
+rm -rf "$work"
+mkdir -p "$work"
+
+# Replace width/height/frames/quality in [output] (or add the table), keep everything else.
+awk -v frames="$frames" '
+  function emit() { print "width = 160"; print "height = 90"; print "frames = " frames;
+                    print "quality = \"preview\""; done = 1 }
+  /^[[:space:]]*\[/ { section = $0; gsub(/[[:space:]]/, "", section) }
+  section == "[output]" && /^[[:space:]]*(width|height|frames|quality)[[:space:]]*=/ { next }
+  { print }
+  /^[[:space:]]*\[output\][[:space:]]*(#.*)?$/ { emit() }
+  END { if (!done) { print ""; print "[output]"; emit() } }
+' "$example" > "$work/scene.toml"
+
+"$raintrace" export "$work/scene.toml" -o "$work/out" > "$work/export.log" 2>&1 || {
+  cat "$work/export.log" >&2
+  echo "render_example.sh: 'raintrace export' failed for $example (log: $work/export.log)" >&2
+  exit 1
+}
+# -D: no display; one thread, so even jittered effects would repeat (POVRAY-NOTES).
+(cd "$work/out" && povray scene.ini -D +WT1 > "$work/povray.log" 2>&1) || {
+  tail -20 "$work/povray.log" >&2
+  echo "render_example.sh: povray failed in $work/out (log: $work/povray.log)" >&2
+  exit 1
+}
+ls "$work/out/images/"*.png > /dev/null
