@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <cstring>
 #include <functional>
+#include <memory>
 #include <stdexcept>
+#include <string_view>
 #include <thread>
 #include <vector>
 
@@ -18,27 +20,49 @@ namespace {
 /// Characters one item can take at most, for reserving: a streak's 4 vertices are 12 numbers
 /// plus punctuation; spheres 5 numbers; index triples 3 integers.
 constexpr std::size_t kNumberSpace = max_number_chars + 1;
+/// Items per chunk: big enough to amortise a thread hand-off, small enough that a chunk's text
+/// (a few MB) stays reusable and warm instead of page-faulting fresh memory every frame.
+constexpr std::size_t kChunk = 16384;
 
-/// A small appender over a pre-sized buffer: no reallocation or bounds checks in the hot loops.
-/// reserve_more() must cover everything put until the next reserve_more().
+/// A growable byte buffer that is never zero-filled: text is written straight into it.
+class Buffer {
+ public:
+  void clear() { m_size = 0; }
+  /// Makes room for `bytes` more and returns where they go.
+  char* reserve_more(std::size_t bytes) {
+    if (m_size + bytes > m_capacity) {
+      const std::size_t capacity = std::max(m_size + bytes, 2 * m_capacity);
+      std::unique_ptr<char[]> grown(new char[capacity]);
+      if (m_size > 0) std::memcpy(grown.get(), m_data.get(), m_size);
+      m_data = std::move(grown);
+      m_capacity = capacity;
+    }
+    return m_data.get() + m_size;
+  }
+  void commit(char* end) { m_size = static_cast<std::size_t>(end - m_data.get()); }
+  [[nodiscard]] std::string_view view() const { return {m_data.get(), m_size}; }
+
+ private:
+  std::unique_ptr<char[]> m_data;
+  std::size_t m_size = 0;
+  std::size_t m_capacity = 0;
+};
+
+/// Writes into a Buffer region reserved up front: no bounds checks in the hot loops.
 class Writer {
  public:
-  explicit Writer(std::string& text) : m_text(text), m_used(text.size()) {}
-  void reserve_more(std::size_t bytes) { m_text.resize(m_used + bytes); }
-  void put(char c) { m_text[m_used++] = c; }
+  Writer(Buffer& buffer, std::size_t bytes) : m_buffer(buffer), m_p(buffer.reserve_more(bytes)) {}
+  ~Writer() { m_buffer.commit(m_p); }
+  Writer(const Writer&) = delete;
+  Writer& operator=(const Writer&) = delete;
+  void put(char c) { *m_p++ = c; }
   void put(const char* s) {
     const std::size_t n = std::strlen(s);
-    std::memcpy(&m_text[m_used], s, n);
-    m_used += n;
+    std::memcpy(m_p, s, n);
+    m_p += n;
   }
-  void number(double v) {
-    char* begin = &m_text[m_used];
-    m_used += static_cast<std::size_t>(write_number(begin, v) - begin);
-  }
-  void index(std::uint64_t v) {
-    char* begin = &m_text[m_used];
-    m_used += static_cast<std::size_t>(write_index(begin, v) - begin);
-  }
+  void number(double v) { m_p = write_number(m_p, v); }
+  void index(std::uint64_t v) { m_p = write_index(m_p, v); }
   void vec(const glm::vec3& v) {
     put('<');
     number(v.x);
@@ -48,57 +72,84 @@ class Writer {
     number(v.z);
     put('>');
   }
-  void finish() { m_text.resize(m_used); }
 
  private:
-  std::string& m_text;
-  std::size_t m_used = 0;
+  Buffer& m_buffer;
+  char* m_p;
 };
 
-/// Runs write(begin, end, text) over [0, count) in chunks, joining the chunks in order.
-/// Chunk boundaries depend only on count, never on threads, so the output cannot either.
-std::string write_chunks(std::size_t count, int threads,
-                         const std::function<void(std::size_t, std::size_t, std::string&)>& write) {
-  constexpr std::size_t kChunk = 16384;
-  const std::size_t chunks = (count + kChunk - 1) / kChunk;
-  std::vector<std::string> parts(chunks);
-  auto run = [&](std::size_t first_chunk, std::size_t stride) {
-    for (std::size_t c = first_chunk; c < chunks; c += stride) {
-      write(c * kChunk, std::min(count, (c + 1) * kChunk), parts[c]);
-    }
-  };
-  const auto workers = static_cast<std::size_t>(std::clamp(threads, 1, 64));
-  if (workers == 1 || chunks <= 1) {
-    run(0, 1);
-  } else {
-    std::vector<std::thread> pool;
-    std::vector<std::exception_ptr> errors(workers);
-    for (std::size_t w = 0; w < workers; ++w) {
-      pool.emplace_back([&, w] {
-        try {
-          run(w, workers);
-        } catch (...) {
-          errors[w] = std::current_exception();
+/// Sends text to the sink in order. Small pieces are gathered; large sections are cut into
+/// chunks that worker threads fill in rounds, each into its own reused buffer, and the
+/// buffers go to the sink in chunk order. Chunk boundaries depend only on the item count,
+/// never on the thread count, and each item's text only on the item: identical bytes always.
+class Emitter {
+ public:
+  Emitter(const TextSink& sink, int threads)
+      : m_sink(sink),
+        m_workers(static_cast<std::size_t>(std::clamp(threads, 1, 64))),
+        m_buffers(m_workers) {}
+
+  void text(std::string_view piece) { m_pending += piece; }
+  void number(double v) { append_number(m_pending, v); }
+  void index(std::size_t v) {
+    char buffer[max_number_chars];
+    m_pending.append(buffer, write_index(buffer, v));
+  }
+  void flush() {
+    if (!m_pending.empty()) m_sink(m_pending);
+    m_pending.clear();
+  }
+
+  /// write(begin, end, buffer) writes items [begin, end) into buffer.
+  template <typename Write>
+  void chunks(std::size_t count, const Write& write) {
+    flush();
+    const std::size_t chunk_count = (count + kChunk - 1) / kChunk;
+    for (std::size_t round = 0; round < chunk_count; round += m_workers) {
+      const std::size_t in_round = std::min(m_workers, chunk_count - round);
+      auto fill = [&](std::size_t w) {
+        const std::size_t c = round + w;
+        m_buffers[w].clear();
+        write(c * kChunk, std::min(count, (c + 1) * kChunk), m_buffers[w]);
+      };
+      if (in_round == 1) {
+        fill(0);
+      } else {
+        std::vector<std::thread> pool;
+        std::vector<std::exception_ptr> errors(in_round);
+        for (std::size_t w = 1; w < in_round; ++w) {
+          pool.emplace_back([&, w] {
+            try {
+              fill(w);
+            } catch (...) {
+              errors[w] = std::current_exception();
+            }
+          });
         }
-      });
-    }
-    for (auto& t : pool) t.join();
-    for (auto& e : errors) {
-      if (e) std::rethrow_exception(e);
+        try {
+          fill(0);
+        } catch (...) {
+          errors[0] = std::current_exception();
+        }
+        for (auto& t : pool) t.join();
+        for (auto& e : errors) {
+          if (e) std::rethrow_exception(e);
+        }
+      }
+      for (std::size_t w = 0; w < in_round; ++w) m_sink(m_buffers[w].view());
     }
   }
-  std::size_t total = 0;
-  for (const auto& p : parts) total += p.size();
-  std::string joined;
-  joined.reserve(total);
-  for (const auto& p : parts) joined += p;
-  return joined;
-}
+
+ private:
+  const TextSink& m_sink;
+  std::size_t m_workers;
+  std::vector<Buffer> m_buffers;
+  std::string m_pending;
+};
 
 void write_spheres(const std::vector<SphereValue>& spheres, std::size_t begin, std::size_t end,
-                   std::string& text) {
-  Writer w(text);
-  w.reserve_more((end - begin) * (8 * kNumberSpace + 40));
+                   Buffer& buffer) {
+  Writer w(buffer, (end - begin) * (8 * kNumberSpace + 40));
   for (std::size_t i = begin; i < end; ++i) {
     const SphereValue& s = spheres[i];
     if (s.axis_ratio == 1.0f) {
@@ -118,38 +169,48 @@ void write_spheres(const std::vector<SphereValue>& spheres, std::size_t begin, s
       w.put("}\n");
     }
   }
-  w.finish();
 }
 
-void append_index(std::string& text, std::size_t value) {
-  char buffer[max_number_chars];
-  text.append(buffer, write_index(buffer, value));
-}
-
-void write_sphere_union(std::string& text, const std::vector<SphereValue>& spheres,
-                        const char* material, int threads) {
+void write_sphere_union(Emitter& out, const std::vector<SphereValue>& spheres,
+                        const char* material) {
   if (spheres.empty()) return;
-  text += "union{\n";
-  text += write_chunks(spheres.size(), threads, [&](std::size_t b, std::size_t e, std::string& t) {
-    write_spheres(spheres, b, e, t);
+  out.text("union{\n");
+  out.chunks(spheres.size(), [&](std::size_t b, std::size_t e, Buffer& buffer) {
+    write_spheres(spheres, b, e, buffer);
   });
-  text += "material{";
-  text += material;
+  out.text("material{");
+  out.text(material);
   // hollow everywhere: a ray through a non-hollow object inside a media container (mist,
   // a streetlight's cone) loses the media behind it, which paints every drop as a dark hole.
-  text += "}\nno_shadow hollow\n}\n";
+  out.text("}\nno_shadow hollow\n}\n");
 }
 
-void write_streak_mesh(std::string& text, const std::vector<StreakValue>& streaks,
-                       const StreakAtlasLayout& atlas, int threads) {
+/// Index triples of the two triangles of each quad: <v, v+1, v+2>, <v, v+2, v+3>.
+void write_triangle_pairs(Writer& w, std::uint64_t v) {
+  w.put('<');
+  w.index(v);
+  w.put(',');
+  w.index(v + 1);
+  w.put(',');
+  w.index(v + 2);
+  w.put(">,<");
+  w.index(v);
+  w.put(',');
+  w.index(v + 2);
+  w.put(',');
+  w.index(v + 3);
+  w.put(">,\n");
+}
+
+void write_streak_mesh(Emitter& out, const std::vector<StreakValue>& streaks,
+                       const StreakAtlasLayout& atlas) {
   if (streaks.empty()) return;
   const std::size_t n = streaks.size();
-  text += "mesh2{\nvertex_vectors{";
-  append_index(text, (4 * n));
-  text += ",\n";
-  text += write_chunks(n, threads, [&](std::size_t b, std::size_t e, std::string& t) {
-    Writer w(t);
-    w.reserve_more((e - b) * (12 * kNumberSpace + 16));
+  out.text("mesh2{\nvertex_vectors{");
+  out.index(4 * n);
+  out.text(",\n");
+  out.chunks(n, [&](std::size_t b, std::size_t e, Buffer& buffer) {
+    Writer w(buffer, (e - b) * (12 * kNumberSpace + 16));
     for (std::size_t i = b; i < e; ++i) {
       for (const glm::vec3& c : streaks[i].corners) {
         w.vec(c);
@@ -157,14 +218,13 @@ void write_streak_mesh(std::string& text, const std::vector<StreakValue>& streak
       }
       w.put('\n');
     }
-    w.finish();
   });
   // One uv quad per atlas cell, inset by half a texel so filtering never reads a neighbour.
   // Corners 0, 1 (trailing end) take the cell's top, 2, 3 (leading end) its bottom.
   const int cells = atlas.cells();
-  text += "}\nuv_vectors{";
-  append_index(text, 4 * static_cast<std::size_t>(cells));
-  text += ",\n";
+  out.text("}\nuv_vectors{");
+  out.index(4 * static_cast<std::size_t>(cells));
+  out.text(",\n");
   const double width = atlas.width();
   const double height = atlas.height();
   for (int cell = 0; cell < cells; ++cell) {
@@ -176,116 +236,94 @@ void write_streak_mesh(std::string& text, const std::vector<StreakValue>& streak
     const double v1 = ((row + 1) * atlas.cell_height - 0.5) / height;
     const double uv[4][2] = {{u0, v1}, {u1, v1}, {u1, v0}, {u0, v0}};
     for (const auto& corner : uv) {
-      text += '<';
-      append_number(text, corner[0]);
-      text += ',';
-      append_number(text, corner[1]);
-      text += ">,";
+      out.text("<");
+      out.number(corner[0]);
+      out.text(",");
+      out.number(corner[1]);
+      out.text(">,");
     }
-    text += '\n';
+    out.text("\n");
   }
-  text += "}\nface_indices{";
-  append_index(text, (2 * n));
-  text += ",\n";
-  text += write_chunks(n, threads, [&](std::size_t b, std::size_t e, std::string& t) {
-    Writer w(t);
-    w.reserve_more((e - b) * (6 * kNumberSpace + 16));
-    for (std::size_t i = b; i < e; ++i) {
-      const std::uint64_t v = 4 * i;
-      w.put('<');
-      w.index(v);
-      w.put(',');
-      w.index(v + 1);
-      w.put(',');
-      w.index(v + 2);
-      w.put(">,<");
-      w.index(v);
-      w.put(',');
-      w.index(v + 2);
-      w.put(',');
-      w.index(v + 3);
-      w.put(">,\n");
-    }
-    w.finish();
+  out.text("}\nface_indices{");
+  out.index(2 * n);
+  out.text(",\n");
+  out.chunks(n, [&](std::size_t b, std::size_t e, Buffer& buffer) {
+    Writer w(buffer, (e - b) * (6 * kNumberSpace + 16));
+    for (std::size_t i = b; i < e; ++i) write_triangle_pairs(w, 4 * i);
   });
-  text += "}\nuv_indices{";
-  append_index(text, (2 * n));
-  text += ",\n";
-  text += write_chunks(n, threads, [&](std::size_t b, std::size_t e, std::string& t) {
-    Writer w(t);
-    w.reserve_more((e - b) * (6 * kNumberSpace + 16));
+  out.text("}\nuv_indices{");
+  out.index(2 * n);
+  out.text(",\n");
+  out.chunks(n, [&](std::size_t b, std::size_t e, Buffer& buffer) {
+    Writer w(buffer, (e - b) * (6 * kNumberSpace + 16));
     for (std::size_t i = b; i < e; ++i) {
-      const auto u = static_cast<std::uint64_t>(4 * streaks[i].cell);
-      w.put('<');
-      w.index(u);
-      w.put(',');
-      w.index(u + 1);
-      w.put(',');
-      w.index(u + 2);
-      w.put(">,<");
-      w.index(u);
-      w.put(',');
-      w.index(u + 2);
-      w.put(',');
-      w.index(u + 3);
-      w.put(">,\n");
+      write_triangle_pairs(w, 4 * static_cast<std::uint64_t>(streaks[i].cell));
     }
-    w.finish();
   });
-  text += "}\ntexture{RT_StreakTexture}\nno_shadow hollow\n}\n";
+  out.text("}\ntexture{RT_StreakTexture}\nno_shadow hollow\n}\n");
 }
 
-void write_bolts(std::string& text, const std::vector<BoltValue>& bolts) {
+void write_bolts(Emitter& out, const std::vector<BoltValue>& bolts) {
   if (bolts.empty()) return;
   // Bolts are light, not rain: the rain mask leaves them out.
-  text += "#if(RT_Mask=0)\n";
+  out.text("#if(RT_Mask=0)\n");
   for (const BoltValue& bolt : bolts) {
     if (bolt.segments.empty()) continue;
-    text += "union{\n";
+    out.text("union{\n");
     for (const CylinderValue& c : bolt.segments) {
-      text += "cylinder{<";
-      append_number(text, c.start.x);
-      text += ',';
-      append_number(text, c.start.y);
-      text += ',';
-      append_number(text, c.start.z);
-      text += ">,<";
-      append_number(text, c.end.x);
-      text += ',';
-      append_number(text, c.end.y);
-      text += ',';
-      append_number(text, c.end.z);
-      text += ">,";
-      append_number(text, c.radius);
-      text += "}\n";
+      out.text("cylinder{<");
+      out.number(c.start.x);
+      out.text(",");
+      out.number(c.start.y);
+      out.text(",");
+      out.number(c.start.z);
+      out.text(">,<");
+      out.number(c.end.x);
+      out.text(",");
+      out.number(c.end.y);
+      out.text(",");
+      out.number(c.end.z);
+      out.text(">,");
+      out.number(c.radius);
+      out.text("}\n");
     }
-    text += "RT_BoltTexture(";
-    append_number(text, bolt.brightness);
-    text += ")\nno_shadow hollow\n}\n";
+    out.text("RT_BoltTexture(");
+    out.number(bolt.brightness);
+    out.text(")\nno_shadow hollow\n}\n");
   }
-  text += "#end\n";
+  out.text("#end\n");
 }
 
 }  // namespace
 
+void write_frame_text(const FrameValues& values, const TextSink& sink,
+                      const StreakAtlasLayout& atlas, int threads) {
+  Emitter out(sink, threads);
+  out.text("// raintrace frame ");
+  out.index(static_cast<std::size_t>(std::max(values.index, 0)));
+  out.text("\n#version 3.7;\n#declare RT_Flash=");
+  out.number(values.flash);
+  out.text(";\n#declare RT_FlashPosition=<");
+  out.number(values.flash_position.x);
+  out.text(",");
+  out.number(values.flash_position.y);
+  out.text(",");
+  out.number(values.flash_position.z);
+  out.text(">;\n#include \"scene.inc\"\n");
+  write_sphere_union(out, values.drops, "RT_DropMaterial");
+  write_streak_mesh(out, values.streaks, atlas);
+  write_sphere_union(out, values.splashes, "RT_SplashMaterial");
+  write_bolts(out, values.bolts);
+  out.flush();
+}
+
 std::string frame_text(const FrameValues& values, const StreakAtlasLayout& atlas, int threads) {
   std::string text;
-  text.reserve(1024);
-  text += "// raintrace frame ";
-  append_index(text, static_cast<std::size_t>(std::max(values.index, 0)));
-  text += "\n#version 3.7;\n#declare RT_Flash=";
-  append_number(text, values.flash);
-  text += ";\n#declare RT_FlashPosition=<";
-  append_number(text, values.flash_position.x);
-  text += ',';
-  append_number(text, values.flash_position.y);
-  text += ',';
-  append_number(text, values.flash_position.z);
-  text += ">;\n#include \"scene.inc\"\n";
-  write_sphere_union(text, values.drops, "RT_DropMaterial", threads);
-  write_streak_mesh(text, values.streaks, atlas, threads);
-  write_sphere_union(text, values.splashes, "RT_SplashMaterial", threads);
-  write_bolts(text, values.bolts);
+  // Typical sizes: ~190 bytes per streak, ~45 per sphere; one reservation, no regrowth.
+  text.reserve(1024 + 200 * values.streaks.size() +
+               64 * (values.drops.size() + values.splashes.size()));
+  write_frame_text(
+      values, [&text](std::string_view piece) { text += piece; }, atlas, threads);
   return text;
 }
 

@@ -4,12 +4,22 @@
 // the streak atlas, bolts are emissive cylinders. No free text is ever written.
 #pragma once
 
+#include <functional>
 #include <string>
+#include <string_view>
 
 #include "povgen/frame_values.h"
 #include "povgen/streak_atlas.h"
 
 namespace raintrace::povgen {
+
+/// Receives text in order, piece by piece (a file, a hash, a string).
+using TextSink = std::function<void(std::string_view)>;
+
+/// Streams the frame scene to sink in pieces of at most a few MB, so a million-drop frame
+/// never sits in memory whole. Same bytes as frame_text().
+void write_frame_text(const FrameValues& values, const TextSink& sink,
+                      const StreakAtlasLayout& atlas = {}, int threads = 1);
 
 /// The frame scene: declares RT_Flash and RT_FlashPosition, includes scene.inc (camera,
 /// lights, environment, materials), then the rain. `threads` > 1 writes chunks of drops in

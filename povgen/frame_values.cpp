@@ -74,9 +74,19 @@ glm::vec3 default_flash_position(const ViewFrustum& view) {
 
 FrameValues build_frame_values(const sim::Frame& frame, const ExportParams& look,
                                const StreakAtlasLayout& atlas) {
-  const ViewFrustum view(look.camera, static_cast<double>(look.width) / look.height);
   FrameValues values;
+  build_frame_values(frame, look, values, atlas);
+  return values;
+}
+
+void build_frame_values(const sim::Frame& frame, const ExportParams& look, FrameValues& values,
+                        const StreakAtlasLayout& atlas) {
+  const ViewFrustum view(look.camera, static_cast<double>(look.width) / look.height);
   values.index = frame.index;
+  values.drops.clear();
+  values.streaks.clear();
+  values.splashes.clear();
+  values.bolts.clear();
 
   const auto split = static_cast<float>(look.sphere_distance_m);
   const StreakContext ctx{view, atlas, static_cast<float>(look.camera.exposure_s), look.width};
@@ -143,7 +153,6 @@ FrameValues build_frame_values(const sim::Frame& frame, const ExportParams& look
     }
     if (!out.segments.empty()) values.bolts.push_back(std::move(out));
   }
-  return values;
 }
 
 }  // namespace raintrace::povgen

@@ -56,4 +56,9 @@ struct FrameValues {
 FrameValues build_frame_values(const sim::Frame& frame, const ExportParams& look,
                                const StreakAtlasLayout& atlas = {});
 
+/// Same, into `values`, reusing its vectors' memory: a sequence of million-drop frames then
+/// stops paying for fresh pages every frame.
+void build_frame_values(const sim::Frame& frame, const ExportParams& look, FrameValues& values,
+                        const StreakAtlasLayout& atlas = {});
+
 }  // namespace raintrace::povgen

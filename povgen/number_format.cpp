@@ -74,8 +74,9 @@ char* write_number(char* out, double value) {
       }
       decimals = 7 - int_digits;
     }
-    auto scaled = static_cast<std::uint64_t>(
-        std::llround(magnitude * kPow10[static_cast<std::size_t>(decimals)]));
+    // Round half away from zero, as llround, without the libm call (magnitude > 0 here).
+    auto scaled =
+        static_cast<std::uint64_t>(magnitude * kPow10[static_cast<std::size_t>(decimals)] + 0.5);
     if (scaled == 0) {
       *out = '0';
       return out + 1;
