@@ -11,15 +11,15 @@ namespace raintrace::sim {
 
 /// Falling drops; index i across all vectors is one drop. Positions in metres, SI throughout.
 struct Drops {
-  std::vector<std::uint64_t> id;         ///< stable identity while the drop lives
-  std::vector<glm::vec3> position;       ///< m
-  std::vector<glm::vec3> velocity;       ///< m/s
-  std::vector<glm::vec3> acceleration;   ///< m/s², from the last substep
-  std::vector<float> diameter;           ///< m, equivalent-volume diameter
-  std::vector<float> age;                ///< s since the drop was born (the paper's lifetime)
-  std::vector<float> vanishing_rate;     ///< 1/s
-  std::vector<float> opacity;            ///< 0..1, falls with vanishing
-  std::vector<glm::vec3> colour;         ///< linear RGB tint
+  std::vector<std::uint64_t> id;        ///< stable identity while the drop lives
+  std::vector<glm::vec3> position;      ///< m
+  std::vector<glm::vec3> velocity;      ///< m/s
+  std::vector<glm::vec3> acceleration;  ///< m/s², from the last substep
+  std::vector<float> diameter;          ///< m, equivalent-volume diameter
+  std::vector<float> age;               ///< s since the drop was born (the paper's lifetime)
+  std::vector<float> vanishing_rate;    ///< 1/s
+  std::vector<float> opacity;           ///< 0..1, falls with vanishing
+  std::vector<glm::vec3> colour;        ///< linear RGB tint
 
   [[nodiscard]] std::size_t size() const { return id.size(); }
 };
@@ -45,16 +45,25 @@ struct BoltSegment {
 struct Bolt {
   std::vector<BoltSegment> segments;
   float brightness = 0.0f;  ///< 0..1, the flash envelope at this instant (return strokes)
+  std::uint64_t id = 0;     ///< strike number (0-based, in strike order), stable across frames
 };
 
 struct Frame {
-  int index = 0;         ///< 1-based frame number
-  double time_s = 0.0;   ///< simulated time of the snapshot
+  int index = 0;        ///< 1-based frame number
+  double time_s = 0.0;  ///< simulated time of the snapshot
   Drops drops;
   SplashDroplets splashes;
-  std::vector<Bolt> bolts;  ///< bolts visible at this instant
-  float flash = 0.0f;       ///< 0..1, total lightning light on the scene at this instant
+  std::vector<Bolt> bolts;       ///< bolts visible at this instant
+  float flash = 0.0f;            ///< 0..1, total lightning light on the scene at this instant
   glm::vec3 wind_m_per_s{0.0f};  ///< wind at the camera's look-at point
+
+  // Running totals since t = 0 (prewarm excluded), for statistics; added by sim/.
+  double ground_water_m3 = 0.0;         ///< water volume of drops that reached the measured ground
+  double ground_area_m2 = 0.0;          ///< ground area over which ground_water_m3 is measured
+  std::uint64_t ground_hits = 0;        ///< drops that reached the ground anywhere in the volume
+  std::uint64_t splash_events = 0;      ///< ground hits inside the view that threw droplets
+  std::uint64_t lightning_strikes = 0;  ///< strikes started at or before time_s
+  double view_volume_m3 = 0.0;          ///< volume of the view frustum [near_m, far_m] drops fill
 };
 
 }  // namespace raintrace::sim

@@ -3,8 +3,91 @@
 //   World world(params);                 // throws std::invalid_argument naming the bad field
 //   world.advance_to(frame_time_s);      // whole substeps; prewarm happens before t = 0
 //   Frame frame = world.snapshot(index); // copy of the state for the exporter
-// Implementation: see world.cpp (sim helper owns the details).
+// The constructor fills the simulated box with rain at its steady-state density and then runs
+// the prewarm, so time_s() == 0 afterwards and the first frame is already full of rain.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "sim/drop_size.h"
+#include "sim/drop_state.h"
 #include "sim/frame.h"
+#include "sim/integrator.h"
+#include "sim/lightning.h"
 #include "sim/params.h"
+#include "sim/spawn_region.h"
+#include "sim/splash.h"
+#include "sim/view_volume.h"
+#include "sim/wind.h"
+
+namespace raintrace::sim {
+
+/// Throws std::invalid_argument naming the first field out of range, e.g.
+/// "rain.far_m must be > rain.near_m (got 0.2 <= 0.3)".
+void validate(const SimParams& params);
+
+class World {
+ public:
+  /// Most drops a World will hold; more throws std::invalid_argument (reduce rain.far_m or
+  /// rain.rate_mm_per_h).
+  static constexpr double kMaxDrops = 50.0e6;
+
+  explicit World(const SimParams& params);
+
+  /// Advances in whole substeps to the last substep boundary at or before t_s (to within
+  /// 1e-6 of a substep). A time in the past is a no-op: the world never runs backwards.
+  void advance_to(double t_s);
+  /// One substep (benchmarks and tests).
+  void step();
+
+  /// The state for the exporter: drops inside the view frustum [near_m, far_m], all splash
+  /// droplets, visible bolts with their brightness, flash, wind at look_at and running totals.
+  [[nodiscard]] Frame snapshot(int frame_index) const;
+
+  /// Simulated time of the current state, s (negative during prewarm).
+  [[nodiscard]] double time_s() const;
+  /// Every simulated drop, in or out of view.
+  [[nodiscard]] const Drops& drops() const { return m_state.drops; }
+  [[nodiscard]] const SplashDroplets& splash_droplets() const { return m_splash.droplets; }
+  [[nodiscard]] const SpawnRegion& region() const { return m_region; }
+  [[nodiscard]] const ViewVolume& view() const { return m_view; }
+  [[nodiscard]] const DropSizeModel& sizes() const { return m_sizes; }
+  /// Water volume (m³) of drops that reached the measured ground area since t = 0.
+  [[nodiscard]] double ground_water_m3() const { return m_ground_water_m3; }
+  /// Drops coalesced and merged drops broken up since the start (prewarm included).
+  [[nodiscard]] std::uint64_t merges() const { return m_merges; }
+  [[nodiscard]] std::uint64_t breakups() const { return m_breakups; }
+
+ private:
+  void fill();
+  void spawn(double t_s);
+  void handle_events(double t_end_s);
+  [[nodiscard]] int thread_count() const;
+
+  SimParams m_params;
+  ViewVolume m_view;
+  Wind m_wind;
+  DropSizeModel m_sizes;
+  SpawnRegion m_region;
+  LightningSchedule m_schedule;
+  std::vector<LightningSchedule::Strike> m_strikes;
+  DropState m_state;
+  SplashState m_splash;
+  std::vector<StepEvents> m_events;
+  std::vector<std::uint32_t> m_removals;
+  std::int64_t m_step = 0;  // substeps taken since the start of the prewarm
+  std::int64_t m_prewarm_steps = 0;
+  std::uint64_t m_next_id = 0;
+  int m_merge_every = 1;
+  float m_merge_cell_h_m = 0.03f;
+  float m_merge_cell_v_m = 0.1f;
+  double m_ground_water_m3 = 0.0;
+  std::uint64_t m_ground_hits = 0;
+  std::uint64_t m_splash_events = 0;
+  std::uint64_t m_merges = 0;
+  std::uint64_t m_breakups = 0;
+};
+
+}  // namespace raintrace::sim

@@ -1,0 +1,60 @@
+// Lightning (paper §3.5): strikes arrive as a Poisson process; each bolt is an L-system
+// skeleton — a trunk stepping from the cloud base to the ground in shrinking, jittered steps,
+// and branches whose counts per generation follow the Fibonacci numbers (the rabbit rule
+// A → AB, B → A: every branch of the previous generation sprouts one child, and those that
+// were already "mature" — the first count(g−2) — sprout a second) — with a flash envelope of
+// several return strokes.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "sim/camera.h"
+#include "sim/frame.h"
+#include "sim/params.h"
+
+namespace raintrace::sim {
+
+/// Branch counts per generation g = 0 … generations−1: F(g+1) = 1, 1, 2, 3, 5, 8, …
+std::vector<int> fibonacci_branch_counts(int generations);
+
+struct BoltBranch {
+  int generation = 0;  ///< 0 = trunk
+  int parent = -1;     ///< index of the parent branch in BoltSkeleton::branches, −1 for trunk
+  std::vector<BoltSegment> segments;  ///< consecutive: segments[k].end == segments[k+1].start
+};
+
+struct BoltSkeleton {
+  std::vector<BoltBranch> branches;  ///< ordered by generation, trunk first
+};
+
+/// The skeleton of strike number `strike`: a pure function of its arguments.
+BoltSkeleton build_bolt(const LightningParams& params, const Camera& camera, double ground_y_m,
+                        std::uint64_t seed, std::uint64_t strike);
+
+/// Flash brightness in [0, 1] at `since_strike_s` after the strike: `return_strokes` strokes
+/// spread over flash_duration_s, each a sharp rise and exponential decay, the first the
+/// brightest. 0 before the strike and after flash_duration_s.
+double flash_envelope(const LightningParams& params, double since_strike_s, std::uint64_t seed,
+                      std::uint64_t strike);
+
+/// Strike times: optional forced first_strike_s (strike 0) and a Poisson process of rate
+/// strikes_per_minute from t = 0 (strikes 1, 2, …). Lazily extended, deterministic in seed.
+class LightningSchedule {
+ public:
+  LightningSchedule(const LightningParams& params, std::uint64_t seed);
+
+  struct Strike {
+    std::uint64_t id = 0;
+    double time_s = 0.0;
+  };
+  /// Strikes with time_s <= t_s, in time order.
+  std::vector<Strike> strikes_until(double t_s);
+
+ private:
+  LightningParams m_params;
+  std::uint64_t m_seed = 0;
+  std::vector<double> m_poisson;  // times of strikes 1, 2, … generated so far
+};
+
+}  // namespace raintrace::sim

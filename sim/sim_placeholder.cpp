@@ -1,1 +1,0 @@
-// Placeholder until sim/ has sources.

@@ -1,0 +1,54 @@
+// The box of air the World simulates: in the camera's horizontal (yaw) frame, the bounding
+// rectangle of the view frustum's footprint, extended upwind by how far wind can carry the
+// slowest drop while it falls from the ceiling to the ground — so wind-blown rain enters the
+// view already at the right density — and vertically from the ground to a ceiling
+// `ceiling_margin_m` above the frustum's highest point. Drops are born on the ceiling and die
+// when they reach the ground or leave the box.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include "sim/view_volume.h"
+
+namespace raintrace::sim {
+
+class SpawnRegion {
+ public:
+  /// wind_h is the steady horizontal wind (m/s), wind_spread a bound on how far gusts and
+  /// turbulence add to it in any direction (m/s), slowest_fall_m_per_s the smallest drop's
+  /// terminal velocity.
+  SpawnRegion(const ViewVolume& view, double ground_y_m, double ceiling_margin_m,
+              const glm::dvec3& wind_h, double wind_spread, double slowest_fall_m_per_s);
+
+  /// World position of yaw-frame coordinates (a across, b along the view) at height y.
+  [[nodiscard]] glm::dvec3 point(double a, double b, double y) const;
+  /// Yaw-frame coordinates (a, b) of a world position.
+  [[nodiscard]] double across(const glm::dvec3& p) const;
+  [[nodiscard]] double along(const glm::dvec3& p) const;
+
+  /// Horizontal area drops are born over, m² (the extended rectangle).
+  [[nodiscard]] double spawn_area_m2() const { return (m_a1 - m_a0) * (m_b1 - m_b0); }
+  /// Air volume simulated, m³.
+  [[nodiscard]] double volume_m3() const { return spawn_area_m2() * (m_ceiling - m_ground); }
+  /// The unextended footprint rectangle, where ground water is measured, m².
+  [[nodiscard]] double measure_area_m2() const { return (m_ma1 - m_ma0) * (m_mb1 - m_mb0); }
+  [[nodiscard]] bool in_measure_area(const glm::dvec3& p) const;
+
+  [[nodiscard]] double ground() const { return m_ground; }
+  [[nodiscard]] double ceiling() const { return m_ceiling; }
+  [[nodiscard]] double a0() const { return m_a0; }
+  [[nodiscard]] double a1() const { return m_a1; }
+  [[nodiscard]] double b0() const { return m_b0; }
+  [[nodiscard]] double b1() const { return m_b1; }
+  [[nodiscard]] const glm::dvec3& origin() const { return m_origin; }
+  [[nodiscard]] const glm::dvec3& across_axis() const { return m_across; }
+  [[nodiscard]] const glm::dvec3& along_axis() const { return m_along; }
+
+ private:
+  glm::dvec3 m_origin{}, m_across{1, 0, 0}, m_along{0, 0, 1};
+  double m_a0 = 0, m_a1 = 0, m_b0 = 0, m_b1 = 0;      // simulated rectangle
+  double m_ma0 = 0, m_ma1 = 0, m_mb0 = 0, m_mb1 = 0;  // measured rectangle
+  double m_ground = 0, m_ceiling = 0;
+};
+
+}  // namespace raintrace::sim

@@ -1,0 +1,68 @@
+// Wind field (see wind.h).
+#include "sim/wind.h"
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <numbers>
+
+#include "sim/random.h"
+
+namespace raintrace::sim {
+
+double gust_function(double t) {
+  constexpr double pi = std::numbers::pi;
+  return std::cos(pi * t) * std::cos(3 * pi * t) * std::cos(5 * pi * t) * std::cos(7 * pi * t) *
+         -0.1 * std::sin(25 * pi * t);
+}
+
+Wind::Wind(const WindParams& params, std::uint64_t seed)
+    : m_params(params), m_turbulence(params.turbulence_m_per_s > 0.0) {
+  const glm::dvec3 flat{params.gust_direction.x, 0.0, params.gust_direction.z};
+  if (glm::length(flat) > 0.0) m_gust_dir = glm::normalize(flat);
+  const double k = 2.0 * std::numbers::pi / params.turbulence_scale_m;
+  // Each mode a·sin(k·x + φ) with a ⟂ k is divergence-free; the amplitude makes the RMS speed
+  // of the sum equal turbulence_m_per_s (each mode carries a²/2 of the variance).
+  const double amp = params.turbulence_m_per_s * std::sqrt(2.0 / kModes);
+  for (int m = 0; m < kModes; ++m) {
+    auto u = [&](int dim) { return uniform(seed, Stream::turbulence, m, dim); };
+    const double cz = 2.0 * u(0) - 1.0, az = 2.0 * std::numbers::pi * u(1);
+    const double sz = std::sqrt(1.0 - cz * cz);
+    const glm::dvec3 dir{sz * std::cos(az), cz, sz * std::sin(az)};
+    const glm::dvec3 helper = std::abs(dir.y) < 0.9 ? glm::dvec3{0, 1, 0} : glm::dvec3{1, 0, 0};
+    const glm::dvec3 e1 = glm::normalize(glm::cross(dir, helper));
+    const glm::dvec3 e2 = glm::cross(dir, e1);
+    const double ap = 2.0 * std::numbers::pi * u(2);
+    m_k[m] = glm::vec3(dir * k);
+    m_amp[m] = glm::vec3((std::cos(ap) * e1 + std::sin(ap) * e2) * amp);
+    m_phase[m] = static_cast<float>(2.0 * std::numbers::pi * u(3));
+  }
+}
+
+glm::dvec3 Wind::uniform_at(double t_s) const {
+  glm::dvec3 w = m_params.velocity_m_per_s;
+  if (m_params.gusts) w += m_gust_dir * (m_params.gust_strength * gust_function(t_s));
+  return w;
+}
+
+glm::vec3 Wind::turbulence_at(const glm::vec3& p, double t_s) const {
+  if (!m_turbulence) return glm::vec3{0.0f};
+  // Frozen turbulence advected by the steady wind.
+  const glm::vec3 q = p - glm::vec3(m_params.velocity_m_per_s * t_s);
+  glm::vec3 w{0.0f};
+  for (int m = 0; m < kModes; ++m) w += m_amp[m] * std::sin(glm::dot(m_k[m], q) + m_phase[m]);
+  return w;
+}
+
+glm::vec3 Wind::at(const glm::vec3& p, double t_s) const {
+  return glm::vec3(uniform_at(t_s)) + turbulence_at(p, t_s);
+}
+
+double Wind::max_horizontal_speed() const {
+  const glm::dvec3 v = m_params.velocity_m_per_s;
+  double s = std::hypot(v.x, v.z);
+  if (m_params.gusts) s += 0.1 * m_params.gust_strength;
+  if (m_turbulence) s += m_params.turbulence_m_per_s * std::sqrt(2.0 * kModes);
+  return s;
+}
+
+}  // namespace raintrace::sim

@@ -1,0 +1,288 @@
+// World orchestration: fill, prewarm, substeps (integrate → ground hits and removals → spawn →
+// merge), snapshot. See world.h for the contract.
+#include "sim/world.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <stdexcept>
+#include <string>
+#include <thread>
+
+#include "sim/breakup.h"
+#include "sim/merging.h"
+#include "sim/random.h"
+#include "sim/terminal_velocity.h"
+
+namespace raintrace::sim {
+namespace {
+
+// Below this many drops a substep is too short to be worth a second thread.
+constexpr std::size_t kParallelMin = 32768;
+// Merging runs every ~10 ms of simulated time; the swept test covers the gap (merging.h).
+constexpr double kMergeInterval_s = 0.01;
+// A drop fainter than this can no longer be seen (1/255 of full opacity).
+constexpr float kMinOpacity = 1.0f / 255.0f;
+
+Wind make_wind(const SimParams& p) {
+  validate(p);  // first member initialised from params: validate before anything uses them
+  return Wind(p.wind, p.seed);
+}
+
+// How far beyond the steady wind drops may drift sideways, as a speed, m/s. Gusts and
+// turbulence are zero-mean oscillations, so their net drift over a fall is a fraction of their
+// peak; a quarter of the gust peak and half the turbulence RMS cover it (more would multiply
+// the drops simulated out of view for nothing).
+double wind_spread(const WindParams& w) {
+  return (w.gusts ? 0.25 * 0.1 * w.gust_strength : 0.0) + 0.5 * w.turbulence_m_per_s;
+}
+
+double default_prewarm(const SimParams& p) {
+  // Long enough for the slowest drop to fall through the ceiling margin into view, so no
+  // part of the view has only fill-placed drops.
+  const double v = terminal_velocity(p.rain.diameter_min_mm * 1e-3);
+  return std::clamp(p.rain.ceiling_margin_m / v, 0.2, 5.0);
+}
+
+}  // namespace
+
+World::World(const SimParams& params)
+    : m_params(params),
+      m_view((validate(params), params.camera), params.rain.near_m, params.rain.far_m),
+      m_wind(make_wind(params)),
+      m_sizes(params.rain),
+      m_region(m_view, params.ground_y_m, params.rain.ceiling_margin_m,
+               glm::dvec3{params.wind.velocity_m_per_s.x, 0.0, params.wind.velocity_m_per_s.z},
+               wind_spread(params.wind), terminal_velocity(params.rain.diameter_min_mm * 1e-3)),
+      m_schedule(params.lightning, params.seed) {
+  const double expected = m_sizes.number_density_per_m3() * m_region.volume_m3();
+  if (expected > kMaxDrops) {
+    throw std::invalid_argument(
+        "rain: the simulated volume would hold " +
+        std::to_string(static_cast<long long>(expected)) +
+        " drops (more than 50 million); reduce rain.far_m or rain.rate_mm_per_h");
+  }
+  const double prewarm = m_params.prewarm_s < 0.0 ? default_prewarm(m_params) : m_params.prewarm_s;
+  m_prewarm_steps = std::llround(prewarm / m_params.substep_s);
+  m_merge_every = std::max(1, static_cast<int>(std::lround(kMergeInterval_s / m_params.substep_s)));
+  const double touch_m =
+      std::max(m_params.rain.diameter_max_mm, m_params.rain.breakup_diameter_mm) * 1e-3;
+  // Vertical relative speeds stay below the fastest terminal velocity; horizontal ones come
+  // from breakup kicks and from small and large drops lagging differently behind gusts.
+  const double window = m_merge_every * m_params.substep_s;
+  const double vertical = terminal_velocity(8e-3) + 1.0;
+  const double horizontal = 1.0 + (m_params.wind.gusts ? 0.1 * m_params.wind.gust_strength : 0.0);
+  m_merge_cell_h_m = static_cast<float>(touch_m + window * horizontal);
+  m_merge_cell_v_m = static_cast<float>(touch_m + window * vertical);
+  m_events.resize(static_cast<std::size_t>(thread_count()));
+  fill();
+  while (m_step < m_prewarm_steps) step();
+}
+
+int World::thread_count() const {
+  if (m_params.threads > 0) return m_params.threads;
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+double World::time_s() const {
+  return static_cast<double>(m_step - m_prewarm_steps) * m_params.substep_s;
+}
+
+void World::fill() {
+  const double count = std::round(m_sizes.number_density_per_m3() * m_region.volume_m3());
+  const auto n = static_cast<std::size_t>(count);
+  m_state.reserve(n + n / 4);
+  const glm::dvec3 wind = m_wind.uniform_at(time_s());
+  const auto rate = static_cast<float>(m_params.rain.vanishing_rate_per_s);
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::uint64_t id = m_next_id++;
+    auto u = [&](int dim) { return uniform(m_params.seed, Stream::fill, id, dim); };
+    const double d = m_sizes.sample_in_air(u(0));
+    const double vt = terminal_velocity(d);
+    const double y = m_region.ground() + u(3) * (m_region.ceiling() - m_region.ground());
+    NewDrop drop;
+    drop.id = id;
+    drop.position =
+        glm::vec3(m_region.point(m_region.a0() + u(1) * (m_region.a1() - m_region.a0()),
+                                 m_region.b0() + u(2) * (m_region.b1() - m_region.b0()), y));
+    drop.velocity = glm::vec3(wind.x, -vt, wind.z);
+    drop.diameter = static_cast<float>(d);
+    // As if it had fallen from the ceiling at terminal velocity.
+    drop.age = static_cast<float>((m_region.ceiling() - y) / vt);
+    drop.vanishing_rate = rate;
+    drop.opacity = std::exp(-rate * drop.age);
+    drop.colour = glm::vec3(m_params.rain.colour);
+    m_state.push(drop);
+  }
+}
+
+void World::spawn(double t_s) {
+  const double dt = m_params.substep_s;
+  const double expected = m_sizes.number_flux_per_m2_s() * m_region.spawn_area_m2() * dt;
+  // floor(λ + u) has mean λ exactly and no state carried between substeps.
+  const auto n = static_cast<std::size_t>(std::floor(
+      expected + uniform(m_params.seed, Stream::spawn_count, static_cast<std::uint64_t>(m_step))));
+  const glm::dvec3 wind = m_wind.uniform_at(t_s);
+  const double breakup_m = m_params.rain.breakup_diameter_mm * 1e-3;
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::uint64_t id = m_next_id++;
+    auto u = [&](int dim) { return uniform(m_params.seed, Stream::drop, id, dim); };
+    const double d = m_sizes.sample_in_flux(u(0));
+    const double vt = terminal_velocity(d);
+    // Born somewhere within this substep's fall below the ceiling, so that no layers form.
+    const double y = m_region.ceiling() - u(3) * vt * dt;
+    NewDrop drop;
+    drop.id = id;
+    drop.position =
+        glm::vec3(m_region.point(m_region.a0() + u(1) * (m_region.a1() - m_region.a0()),
+                                 m_region.b0() + u(2) * (m_region.b1() - m_region.b0()), y));
+    drop.velocity = glm::vec3(wind.x, -vt, wind.z);
+    drop.diameter = static_cast<float>(d);
+    drop.vanishing_rate = static_cast<float>(m_params.rain.vanishing_rate_per_s);
+    drop.colour = glm::vec3(m_params.rain.colour);
+    m_state.push(drop);
+    if (d > breakup_m) {
+      m_breakups += break_up(m_state, m_state.size() - 1, breakup_m, m_next_id, m_params.seed) > 0;
+    }
+  }
+}
+
+void World::handle_events(double t_end_s) {
+  const bool counting = t_end_s > 0.0;
+  const float ground = static_cast<float>(m_region.ground());
+  m_removals.clear();
+  Drops& d = m_state.drops;
+  for (const StepEvents& ev : m_events) {
+    for (const std::uint32_t i : ev.ground) {
+      const glm::vec3 p = d.position[i], v = d.velocity[i];
+      // Back along this substep's motion to where the drop crossed the ground.
+      const float tau = v.y < 0.0f ? (p.y - ground) / v.y : 0.0f;
+      glm::vec3 hit = p - v * tau;
+      hit.y = ground;
+      const double diameter = d.diameter[i];
+      if (counting) {
+        ++m_ground_hits;
+        if (m_region.in_measure_area(glm::dvec3(hit))) {
+          m_ground_water_m3 += diameter * diameter * diameter * (3.14159265358979323846 / 6.0);
+        }
+      }
+      if (m_params.splashes.enabled && m_params.splashes.droplets > 0 &&
+          m_view.contains(glm::dvec3(hit) + glm::dvec3{0.0, 0.01, 0.0})) {
+        emit_splash(m_splash, m_params.splashes, hit, v, d.diameter[i], d.id[i], m_params.seed);
+        if (counting) ++m_splash_events;
+      }
+      m_removals.push_back(i);
+    }
+    m_removals.insert(m_removals.end(), ev.gone.begin(), ev.gone.end());
+  }
+  // Descending order: every index above the current one is already gone, so the drop moved
+  // into place by swap_remove is never one still to be removed.
+  std::sort(m_removals.begin(), m_removals.end(), std::greater<>());
+  for (const std::uint32_t i : m_removals) m_state.swap_remove(i);
+}
+
+void World::step() {
+  const double t = time_s();
+  const double dt = m_params.substep_s;
+  StepConstants c;
+  c.dt = static_cast<float>(dt);
+  c.time_s = t;
+  c.wind = glm::vec3(m_wind.uniform_at(t));
+  c.turbulence = m_wind.has_turbulence() ? &m_wind : nullptr;
+  c.origin = glm::vec3(m_region.origin());
+  c.across = glm::vec3(m_region.across_axis());
+  c.along = glm::vec3(m_region.along_axis());
+  c.a0 = static_cast<float>(m_region.a0());
+  c.a1 = static_cast<float>(m_region.a1());
+  c.b0 = static_cast<float>(m_region.b0());
+  c.b1 = static_cast<float>(m_region.b1());
+  c.ground = static_cast<float>(m_region.ground());
+  c.ceiling = static_cast<float>(m_region.ceiling());
+  c.min_opacity = kMinOpacity;
+
+  step_splashes(m_splash, m_params.splashes, c.dt, c.ground);
+
+  const std::size_t n = m_state.size();
+  for (StepEvents& ev : m_events) ev.clear();
+  const std::size_t chunks =
+      n >= kParallelMin ? std::min<std::size_t>(m_events.size(), n / (kParallelMin / 2)) : 1;
+  if (chunks <= 1) {
+    integrate_range(m_state, 0, n, c, m_events[0]);
+  } else {
+    // Chunk k covers [k·n/chunks, (k+1)·n/chunks); events are concatenated in chunk order,
+    // i.e. ascending drop index, whatever the number of chunks.
+    std::vector<std::jthread> workers;
+    workers.reserve(chunks - 1);
+    for (std::size_t k = 1; k < chunks; ++k) {
+      workers.emplace_back([&, k] {
+        integrate_range(m_state, k * n / chunks, (k + 1) * n / chunks, c, m_events[k]);
+      });
+    }
+    integrate_range(m_state, 0, n / chunks, c, m_events[0]);
+  }
+  handle_events(t + dt);
+  spawn(t);
+  ++m_step;
+  if (m_params.rain.merging && m_step % m_merge_every == 0) {
+    const MergeResult r = merge_touching(
+        m_state, static_cast<float>(m_merge_every * dt), m_merge_cell_h_m, m_merge_cell_v_m,
+        m_params.rain.breakup_diameter_mm * 1e-3, m_next_id, m_params.seed);
+    m_merges += r.merges;
+    m_breakups += r.breakups;
+  }
+  if (m_params.lightning.enabled) m_strikes = m_schedule.strikes_until(time_s());
+}
+
+void World::advance_to(double t_s) {
+  const double steps = (t_s - time_s()) / m_params.substep_s + 1e-6;
+  if (!(steps >= 1.0)) return;
+  const auto target = m_step + static_cast<std::int64_t>(std::floor(steps));
+  while (m_step < target) step();
+}
+
+Frame World::snapshot(int frame_index) const {
+  Frame f;
+  f.index = frame_index;
+  f.time_s = time_s();
+  const Drops& d = m_state.drops;
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    if (!m_view.contains(glm::dvec3(d.position[i]))) continue;
+    f.drops.id.push_back(d.id[i]);
+    f.drops.position.push_back(d.position[i]);
+    f.drops.velocity.push_back(d.velocity[i]);
+    f.drops.acceleration.push_back(d.acceleration[i]);
+    f.drops.diameter.push_back(d.diameter[i]);
+    f.drops.age.push_back(d.age[i]);
+    f.drops.vanishing_rate.push_back(d.vanishing_rate[i]);
+    f.drops.opacity.push_back(d.opacity[i]);
+    f.drops.colour.push_back(d.colour[i]);
+  }
+  f.splashes = m_splash.droplets;
+  float flash = 0.0f;
+  for (const auto& strike : m_strikes) {
+    const double since = f.time_s - strike.time_s;
+    if (since < 0.0 || since > m_params.lightning.flash_duration_s) continue;
+    Bolt bolt;
+    bolt.id = strike.id;
+    bolt.brightness =
+        static_cast<float>(flash_envelope(m_params.lightning, since, m_params.seed, strike.id));
+    const BoltSkeleton skeleton = build_bolt(m_params.lightning, m_params.camera,
+                                             m_params.ground_y_m, m_params.seed, strike.id);
+    for (const BoltBranch& branch : skeleton.branches) {
+      bolt.segments.insert(bolt.segments.end(), branch.segments.begin(), branch.segments.end());
+    }
+    flash += bolt.brightness;
+    f.bolts.push_back(std::move(bolt));
+  }
+  f.flash = std::min(flash, 1.0f);
+  f.lightning_strikes = m_strikes.size();
+  f.wind_m_per_s = m_wind.at(glm::vec3(m_params.camera.look_at), f.time_s);
+  f.ground_water_m3 = m_ground_water_m3;
+  f.ground_area_m2 = m_region.measure_area_m2();
+  f.ground_hits = m_ground_hits;
+  f.splash_events = m_splash_events;
+  f.view_volume_m3 = m_view.volume_m3();
+  return f;
+}
+
+}  // namespace raintrace::sim

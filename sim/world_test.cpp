@@ -1,0 +1,176 @@
+// World: validation, prewarm, containment, determinism and thread-count independence.
+#include "sim/world.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+#include "sim/terminal_velocity.h"
+
+namespace raintrace::sim {
+namespace {
+
+// A small view so tests run fast: far 3 m holds a few thousand drops in view, ~30 000 in the
+// simulated box; a short prewarm (the fill is already at steady state).
+SimParams small_scene() {
+  SimParams p;
+  p.rain.far_m = 3.0;
+  p.rain.rate_mm_per_h = 10.0;
+  p.prewarm_s = 0.2;
+  p.threads = 1;
+  return p;
+}
+
+std::string error_of(const SimParams& p) {
+  try {
+    World w(p);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(World, RejectsFarNotBeyondNearNamingTheField) {
+  SimParams p = small_scene();
+  p.rain.far_m = 0.2;
+  EXPECT_NE(error_of(p).find("rain.far_m must be > rain.near_m"), std::string::npos) << error_of(p);
+}
+
+TEST(World, RejectsOutOfRangeFieldsByName) {
+  SimParams p = small_scene();
+  p.substep_s = 0.5;
+  EXPECT_NE(error_of(p).find("substep_s"), std::string::npos);
+  p = small_scene();
+  p.wind.turbulence_m_per_s = std::nan("");
+  EXPECT_NE(error_of(p).find("wind.turbulence_m_per_s"), std::string::npos);
+  p = small_scene();
+  p.camera.look_at = p.camera.position;
+  EXPECT_NE(error_of(p).find("camera.look_at"), std::string::npos);
+  p = small_scene();
+  p.lightning.generations = 9;
+  EXPECT_NE(error_of(p).find("lightning.generations"), std::string::npos);
+}
+
+TEST(World, FirstFrameIsAlreadyFullOfRain) {
+  const SimParams p = small_scene();
+  World world(p);
+  EXPECT_DOUBLE_EQ(world.time_s(), 0.0);
+  const Frame f = world.snapshot(1);
+  // Expected drops in view = density × frustum volume; Poisson-like spread is ~sqrt(n), so
+  // 15 % is many standard deviations for the thousands of drops here.
+  const double expected = world.sizes().number_density_per_m3() * f.view_volume_m3;
+  ASSERT_GT(expected, 300.0);
+  EXPECT_NEAR(static_cast<double>(f.drops.size()), expected, 0.15 * expected);
+}
+
+TEST(World, DensityInViewStaysConstant) {
+  const SimParams p = small_scene();
+  World world(p);
+  const double expected = world.sizes().number_density_per_m3() * world.view().volume_m3();
+  for (int frame = 1; frame <= 8; ++frame) {
+    world.advance_to(frame * 0.25);
+    const double n = static_cast<double>(world.snapshot(frame).drops.size());
+    EXPECT_NEAR(n, expected, 0.15 * expected) << "at t = " << world.time_s();
+  }
+}
+
+TEST(World, AdvancesInWholeSubsteps) {
+  SimParams p = small_scene();
+  p.substep_s = 0.004;
+  World world(p);
+  world.advance_to(0.1);  // 25 substeps exactly
+  EXPECT_NEAR(world.time_s(), 0.1, 1e-12);
+  world.advance_to(0.103);  // not a whole substep further: stays
+  EXPECT_NEAR(world.time_s(), 0.1, 1e-12);
+  world.advance_to(0.05);  // the past: no-op
+  EXPECT_NEAR(world.time_s(), 0.1, 1e-12);
+}
+
+void expect_inside_and_finite(const World& world) {
+  const Drops& d = world.drops();
+  const SpawnRegion& r = world.region();
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    const glm::dvec3 p(d.position[i]);
+    ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+    ASSERT_TRUE(std::isfinite(d.velocity[i].x) && std::isfinite(d.velocity[i].y));
+    const double a = r.across(p), b = r.along(p);
+    // float positions vs double bounds: allow a micrometre.
+    ASSERT_GE(a, r.a0() - 1e-3);
+    ASSERT_LE(a, r.a1() + 1e-3);
+    ASSERT_GE(b, r.b0() - 1e-3);
+    ASSERT_LE(b, r.b1() + 1e-3);
+    ASSERT_GT(p.y, r.ground() - 1e-3);
+    ASSERT_LE(p.y, r.ceiling() + 1e-3);
+  }
+}
+
+TEST(World, DropsNeverEscapeOrBecomeNaNInStrongGustyTurbulentWind) {
+  SimParams p = small_scene();
+  p.wind.velocity_m_per_s = {12.0, 0.0, -6.0};
+  p.wind.gusts = true;
+  p.wind.gust_strength = 150.0;  // peaks of 15 m/s
+  p.wind.turbulence_m_per_s = 6.0;
+  p.wind.turbulence_scale_m = 1.0;
+  p.substep_s = 0.02;  // the largest substep allowed
+  // Few, fast drops keep the wide upwind box cheap.
+  p.rain.far_m = 1.5;
+  p.rain.rate_mm_per_h = 1.0;
+  p.rain.diameter_min_mm = 1.5;
+  World world(p);
+  for (int k = 1; k <= 20; ++k) {
+    world.advance_to(k * 0.1);
+    expect_inside_and_finite(world);
+  }
+  EXPECT_GT(world.drops().size(), 0u);
+}
+
+bool same_frame(const Frame& a, const Frame& b) {
+  auto same = [](const auto& x, const auto& y) {
+    return x.size() == y.size() &&
+           (x.empty() || std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0);
+  };
+  return same(a.drops.id, b.drops.id) && same(a.drops.position, b.drops.position) &&
+         same(a.drops.velocity, b.drops.velocity) && same(a.drops.diameter, b.drops.diameter) &&
+         same(a.drops.acceleration, b.drops.acceleration) && same(a.drops.age, b.drops.age) &&
+         same(a.drops.opacity, b.drops.opacity) && same(a.splashes.position, b.splashes.position) &&
+         a.flash == b.flash && a.bolts.size() == b.bolts.size();
+}
+
+TEST(World, SameSeedGivesIdenticalState) {
+  SimParams p = small_scene();
+  p.wind.turbulence_m_per_s = 3.0;
+  p.lightning.enabled = true;
+  p.lightning.first_strike_s = 0.1;
+  World a(p), b(p);
+  a.advance_to(0.2);
+  b.advance_to(0.2);
+  EXPECT_TRUE(same_frame(a.snapshot(1), b.snapshot(1)));
+  p.seed = 2;
+  World c(p);
+  c.advance_to(0.2);
+  EXPECT_FALSE(same_frame(a.snapshot(1), c.snapshot(1)));
+}
+
+TEST(World, OneAndTwoThreadsGiveBitIdenticalSnapshots) {
+  // Big enough (> 32768 drops) that two threads really split the work.
+  SimParams p;
+  p.rain.far_m = 5.0;
+  p.rain.rate_mm_per_h = 20.0;
+  p.wind.velocity_m_per_s = {3.0, 0.0, 1.0};
+  p.wind.turbulence_m_per_s = 2.0;
+  p.prewarm_s = 0.05;
+  p.threads = 1;
+  World one(p);
+  p.threads = 2;
+  World two(p);
+  ASSERT_GT(one.drops().size(), 40000u);
+  one.advance_to(0.1);
+  two.advance_to(0.1);
+  EXPECT_TRUE(same_frame(one.snapshot(3), two.snapshot(3)));
+}
+
+}  // namespace
+}  // namespace raintrace::sim
