@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace raintrace::povgen {
@@ -40,5 +41,16 @@ void write_manifest(const std::filesystem::path& path, const Manifest& manifest)
 
 /// 64-bit FNV-1a of bytes, as 16 hex digits: cheap, stable across platforms and runs.
 std::string content_hash(std::string_view bytes);
+
+/// content_hash() fed piece by piece (added by the export owner): hashing a frame while it
+/// streams to disk gives the same digits as hashing its whole text at once.
+class ContentHasher {
+ public:
+  void update(std::string_view bytes);
+  [[nodiscard]] std::string hex() const;
+
+ private:
+  std::uint64_t m_hash = 0xcbf29ce484222325ULL;  // FNV-1a 64-bit offset basis
+};
 
 }  // namespace raintrace::povgen

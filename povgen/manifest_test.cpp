@@ -84,5 +84,13 @@ TEST(Manifest, ContentHashIsFnv1a64) {
   EXPECT_NE(content_hash("frame 1"), content_hash("frame 2"));
 }
 
+TEST(Manifest, HashingInPiecesEqualsHashingAtOnce) {
+  ContentHasher hasher;
+  hasher.update("foo");
+  hasher.update("");
+  hasher.update("bar");
+  EXPECT_EQ(hasher.hex(), "85944171f73967e8");
+}
+
 }  // namespace
 }  // namespace raintrace::povgen

@@ -1,7 +1,9 @@
 // Writing the shared files of an output folder.
 #include "povgen/output_folder.h"
 
+#include <cstdio>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <system_error>
@@ -40,6 +42,34 @@ void create_output_folders(const std::filesystem::path& out_dir) {
                                error.message());
     }
   }
+}
+
+std::string write_frame_file(const std::filesystem::path& path, const FrameValues& values,
+                             std::string_view hash_prefix, int threads) {
+  std::filesystem::path tmp = path;
+  tmp += ".tmp";
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(tmp.c_str(), "wb"), &std::fclose);
+  if (!file) throw std::runtime_error("cannot write " + tmp.string());
+  ContentHasher hasher;
+  hasher.update(hash_prefix);
+  bool ok = true;
+  write_frame_text(
+      values,
+      [&](std::string_view piece) {
+        hasher.update(piece);
+        ok = ok && std::fwrite(piece.data(), 1, piece.size(), file.get()) == piece.size();
+      },
+      StreakAtlasLayout{}, threads);
+  ok = std::fflush(file.get()) == 0 && ok;
+  ok = std::fclose(file.release()) == 0 && ok;
+  if (!ok) throw std::runtime_error("cannot write " + tmp.string() + " (disk full?)");
+  std::error_code error;
+  std::filesystem::rename(tmp, path, error);
+  if (error) {
+    throw std::runtime_error("cannot rename " + tmp.string() + " to " + path.string() + ": " +
+                             error.message());
+  }
+  return hasher.hex();
 }
 
 std::string read_file_bytes(const std::filesystem::path& path) {

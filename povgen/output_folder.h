@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "povgen/export_params.h"
+#include "povgen/frame_values.h"
 
 namespace raintrace::povgen {
 
@@ -24,6 +25,12 @@ void create_output_folders(const std::filesystem::path& out_dir);
 /// these files' bytes: a frame's input hash combines it with the frame's own text.
 std::string write_shared_files(const std::filesystem::path& out_dir, const ExportParams& look,
                                int frame_count, const std::filesystem::path& scene_dir);
+
+/// Streams the frame's text into path (via path.tmp and a rename) with `threads` writer
+/// threads and returns content_hash(hash_prefix + text): the frame's input hash when
+/// hash_prefix is the shared files' hash. Throws std::runtime_error naming the path.
+std::string write_frame_file(const std::filesystem::path& path, const FrameValues& values,
+                             std::string_view hash_prefix, int threads);
 
 /// Bytes of a file, for hashing. Throws std::runtime_error if it cannot be read.
 std::string read_file_bytes(const std::filesystem::path& path);
