@@ -1,5 +1,5 @@
-// Shape of a falling drop and the length of its streak on an exposed image: the two physical
-// formulas the exporter needs. sim/ has no public equivalents yet, so they live here.
+// Shape of a falling drop and the length of its streak on an exposed image, in the units the
+// exporter uses (radius). Delegates to sim/ so simulation and picture share one formula.
 #pragma once
 
 namespace raintrace::povgen {
