@@ -80,8 +80,8 @@ DropSizeModel::DropSizeModel(const RainParams& rain) : m_dmin_mm(rain.diameter_m
   const double water_flux_unit = std::numbers::pi / 6.0 * sum_vd3 * kMm3ToM3;
   const double target = rate / 3.6e6;  // mm/h → m/s
   const double c = water_flux_unit > 0.0 ? target / water_flux_unit : 0.0;
-  // s(D) was shifted by e^(ΛDmin), so the applied N0 is c·e^(−ΛDmin).
-  m_scale = (mp ? c * std::exp(-lambda * m_dmin_mm) : c) / (mp ? kMarshallPalmerN0 : 1.0);
+  // s(D) = e^(−Λ(D − Dmin)) = e^(ΛDmin)·e^(−ΛD), so the applied N0 is c·e^(ΛDmin).
+  m_scale = mp ? c * std::exp(lambda * m_dmin_mm) / kMarshallPalmerN0 : c;
   m_number_density = c * air;
   m_number_flux = c * flux;
   m_mean_diameter_m = mean_mm * 1e-3;

@@ -1,1 +1,82 @@
+// StatisticsCollector on hand-made frames.
+#include "sim/statistics.h"
+
 #include <gtest/gtest.h>
+
+namespace raintrace::sim {
+namespace {
+
+Frame frame_with(double t, std::initializer_list<std::pair<float, glm::vec3>> drops) {
+  Frame f;
+  f.time_s = t;
+  f.view_volume_m3 = 2.0;
+  for (const auto& [d, v] : drops) {
+    f.drops.id.push_back(f.drops.id.size());
+    f.drops.position.push_back({});
+    f.drops.velocity.push_back(v);
+    f.drops.acceleration.push_back({});
+    f.drops.diameter.push_back(d);
+    f.drops.age.push_back(0);
+    f.drops.vanishing_rate.push_back(0);
+    f.drops.opacity.push_back(1);
+    f.drops.colour.push_back({1, 1, 1});
+  }
+  return f;
+}
+
+TEST(Statistics, AveragesDropsAndBinsFallSpeeds) {
+  SimParams p;
+  p.rain.rate_mm_per_h = 7.0;
+  StatisticsCollector c(p);
+  c.add(frame_with(0.5, {{1.2e-3f, {1, -4, 0}}, {3.1e-3f, {3, -8, 2}}}));
+  c.add(frame_with(1.0, {{1.4e-3f, {2, -5, 0}}, {3.2e-3f, {2, -9, 2}}}));
+  const Statistics s = c.result();
+  EXPECT_EQ(s.frames, 2);
+  EXPECT_DOUBLE_EQ(s.dt_s, 0.5);
+  EXPECT_DOUBLE_EQ(s.drop_count, 2.0);
+  EXPECT_DOUBLE_EQ(s.number_density_per_m3, 1.0);  // 2 drops in 2 m³
+  EXPECT_NEAR(s.mean_diameter_mm, (1.2 + 3.1 + 1.4 + 3.2) / 4, 1e-6);
+  EXPECT_NEAR(s.mean_horizontal_velocity_m_per_s[0], 2.0, 1e-12);
+  EXPECT_NEAR(s.mean_horizontal_velocity_m_per_s[1], 1.0, 1e-12);
+  // Bin [1.0, 1.5) mm: speeds 4 and 5 → 4.5; bin [3.0, 3.5): 8 and 9 → 8.5.
+  EXPECT_DOUBLE_EQ(s.fall_speed[2].diameter_mm, 1.25);
+  EXPECT_EQ(s.fall_speed[2].samples, 2u);
+  EXPECT_DOUBLE_EQ(s.fall_speed[2].speed_m_per_s, 4.5);
+  EXPECT_DOUBLE_EQ(s.fall_speed[6].speed_m_per_s, 8.5);
+  EXPECT_EQ(s.fall_speed[0].samples, 0u);
+  EXPECT_DOUBLE_EQ(s.rain_rate_configured_mm_per_h, 7.0);
+}
+
+TEST(Statistics, MeasuredRateIsGroundWaterDepthPerHour) {
+  StatisticsCollector c{SimParams{}};
+  Frame f = frame_with(1800.0, {});
+  f.ground_water_m3 = 0.004;  // 4 mm over 1 m² in half an hour → 8 mm/h
+  f.ground_area_m2 = 1.0;
+  f.splash_events = 12;
+  f.lightning_strikes = 2;
+  Bolt a, b;
+  a.id = 0;
+  a.segments.resize(10);
+  b.id = 1;
+  b.segments.resize(5);
+  f.bolts = {a, b};
+  c.add(f);
+  f.time_s = 1801.0;
+  f.bolts = {b};  // seen again: not counted twice
+  c.add(f);
+  const Statistics s = c.result();
+  EXPECT_NEAR(s.rain_rate_measured_mm_per_h, 8.0 * 1800.0 / 1801.0, 1e-9);
+  EXPECT_EQ(s.splashes, 12u);
+  EXPECT_EQ(s.lightning_strikes, 2u);
+  EXPECT_EQ(s.lightning_segments, 15u);
+}
+
+TEST(Statistics, EmptyIsAllZerosButTheConfiguredRate) {
+  const Statistics s = StatisticsCollector{SimParams{}}.result();
+  EXPECT_EQ(s.frames, 0);
+  EXPECT_EQ(s.rain_rate_measured_mm_per_h, 0.0);
+  EXPECT_EQ(s.rain_rate_configured_mm_per_h, 5.0);
+}
+
+}  // namespace
+}  // namespace raintrace::sim

@@ -1,1 +1,79 @@
+// Gust function values by hand, turbulence statistics and divergence.
+#include "sim/wind.h"
+
 #include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace raintrace::sim {
+namespace {
+
+TEST(Wind, GustFunctionMatchesHandValues) {
+  // t = 0.02: cos(0.02π)·cos(0.06π)·cos(0.1π)·cos(0.14π) = 0.998027·0.982287·0.951057·0.904827
+  // = 0.843631; sin(25π·0.02) = sin(π/2) = 1 → w = −0.0843631.
+  EXPECT_NEAR(gust_function(0.02), -0.0843631, 1e-6);
+  // t = 0.06: 0.982287·0.844328·0.587785·0.248690 = 0.121235; sin(1.5π) = −1 → +0.0121235.
+  EXPECT_NEAR(gust_function(0.06), 0.0121235, 1e-6);
+  // t = 0 and t = 1: sin(25πt) = 0.
+  EXPECT_NEAR(gust_function(0.0), 0.0, 1e-15);
+  EXPECT_NEAR(gust_function(1.0), 0.0, 1e-12);
+  // t = 0.1: cos(5π·0.1) = cos(π/2) = 0.
+  EXPECT_NEAR(gust_function(0.1), 0.0, 1e-12);
+}
+
+TEST(Wind, GustsScaleAlongTheirHorizontalDirection) {
+  WindParams p;
+  p.velocity_m_per_s = {1.0, 0.0, 2.0};
+  p.gusts = true;
+  p.gust_strength = 20.0;
+  p.gust_direction = {0.0, 5.0, 3.0};  // y ignored → +z
+  const Wind wind(p, 1);
+  const glm::dvec3 w = wind.uniform_at(0.02);
+  EXPECT_NEAR(w.x, 1.0, 1e-12);
+  EXPECT_NEAR(w.y, 0.0, 1e-12);
+  EXPECT_NEAR(w.z, 2.0 + 20.0 * -0.0843631, 1e-5);
+}
+
+TEST(Wind, TurbulenceHasTheRequestedRmsAndNoDivergence) {
+  WindParams p;
+  p.turbulence_m_per_s = 2.0;
+  p.turbulence_scale_m = 3.0;
+  const Wind wind(p, 7);
+  // RMS over a large cube of sample points: the modes are incoherent, so the mean square is
+  // Σ a²/2 = turbulence² (to sampling error of a few %).
+  double sum = 0.0;
+  int n = 0;
+  double max_div = 0.0;
+  const float h = 1e-2f;
+  for (int i = 0; i < 30; ++i) {
+    for (int j = 0; j < 30; ++j) {
+      for (int k = 0; k < 30; ++k) {
+        const glm::vec3 x{static_cast<float>(i) * 1.37f, static_cast<float>(j) * 1.11f,
+                          static_cast<float>(k) * 1.53f};
+        const glm::vec3 w = wind.turbulence_at(x, 0.0);
+        sum += static_cast<double>(w.x * w.x + w.y * w.y + w.z * w.z);
+        ++n;
+        const float div = (wind.turbulence_at(x + glm::vec3{h, 0, 0}, 0.0).x -
+                           wind.turbulence_at(x - glm::vec3{h, 0, 0}, 0.0).x +
+                           wind.turbulence_at(x + glm::vec3{0, h, 0}, 0.0).y -
+                           wind.turbulence_at(x - glm::vec3{0, h, 0}, 0.0).y +
+                           wind.turbulence_at(x + glm::vec3{0, 0, h}, 0.0).z -
+                           wind.turbulence_at(x - glm::vec3{0, 0, h}, 0.0).z) /
+                          (2 * h);
+        max_div = std::max(max_div, static_cast<double>(std::abs(div)));
+      }
+    }
+  }
+  EXPECT_NEAR(std::sqrt(sum / n), 2.0, 0.3);
+  // Gradients are ~ amplitude·k ≈ 2·2.1 = 4 /s; divergence is zero up to float differencing.
+  EXPECT_LT(max_div, 0.05);
+}
+
+TEST(Wind, NoTurbulenceByDefault) {
+  const Wind wind(WindParams{}, 1);
+  EXPECT_FALSE(wind.has_turbulence());
+  EXPECT_EQ(wind.at({1, 2, 3}, 0.5), glm::vec3(0.0f));
+}
+
+}  // namespace
+}  // namespace raintrace::sim

@@ -141,7 +141,8 @@ bool same_frame(const Frame& a, const Frame& b) {
 
 TEST(World, SameSeedGivesIdenticalState) {
   SimParams p = small_scene();
-  p.wind.turbulence_m_per_s = 3.0;
+  p.rain.far_m = 2.0;
+  p.wind.turbulence_m_per_s = 0.5;
   p.lightning.enabled = true;
   p.lightning.first_strike_s = 0.1;
   World a(p), b(p);
@@ -159,8 +160,10 @@ TEST(World, OneAndTwoThreadsGiveBitIdenticalSnapshots) {
   SimParams p;
   p.rain.far_m = 5.0;
   p.rain.rate_mm_per_h = 20.0;
-  p.wind.velocity_m_per_s = {3.0, 0.0, 1.0};
-  p.wind.turbulence_m_per_s = 2.0;
+  // Wind only along the view (no upwind box extension) and gentle turbulence.
+  p.camera.look_at = {0.0, 1.6, 5.0};
+  p.wind.velocity_m_per_s = {0.0, 0.0, -0.3};
+  p.wind.turbulence_m_per_s = 0.3;
   p.prewarm_s = 0.05;
   p.threads = 1;
   World one(p);
@@ -170,6 +173,75 @@ TEST(World, OneAndTwoThreadsGiveBitIdenticalSnapshots) {
   one.advance_to(0.1);
   two.advance_to(0.1);
   EXPECT_TRUE(same_frame(one.snapshot(3), two.snapshot(3)));
+}
+
+TEST(World, WaterReachingTheGroundMatchesTheRainRate) {
+  for (const double rate : {5.0, 30.0}) {
+    SimParams p = small_scene();
+    p.rain.far_m = 2.0;
+    p.rain.rate_mm_per_h = rate;
+    p.splashes.enabled = false;  // not needed here; keeps the test fast
+    World world(p);
+    world.advance_to(3.0);
+    const Frame f = world.snapshot(1);
+    // depth = volume / area; mm/h = m · 1000 / s · 3600.
+    const double measured = f.ground_water_m3 / f.ground_area_m2 * 1000.0 / f.time_s * 3600.0;
+    EXPECT_NEAR(measured, rate, 0.1 * rate) << "ground hits " << f.ground_hits;
+  }
+}
+
+TEST(World, SplashesAppearWhereDropsHitVisibleGround) {
+  SimParams p = small_scene();
+  p.camera.look_at = {0.0, 0.0, 0.0};  // looking down at the ground in front
+  p.splashes.droplets = 5;
+  World world(p);
+  world.advance_to(0.3);  // longer than a droplet's life: every live droplet is from t > 0
+  const Frame f = world.snapshot(1);
+  ASSERT_GT(f.splash_events, 0u);
+  ASSERT_GT(f.splashes.size(), 0u);
+  // Droplets live 0.15 s, so at most the last ~0.15 s of splashes are alive.
+  EXPECT_LE(f.splashes.size(), f.splash_events * 5);
+  for (std::size_t i = 0; i < f.splashes.size(); ++i) {
+    EXPECT_GE(f.splashes.position[i].y, 0.0f);
+    EXPECT_LE(f.splashes.position[i].y, 0.5f);  // v_up <= 0.35·9 m/s → apex < 0.5 m
+    EXPECT_GT(f.splashes.opacity[i], 0.0f);
+    EXPECT_LE(f.splashes.opacity[i], 1.0f);
+  }
+}
+
+TEST(World, DropsMergeInFlightAndNoneExceedsTheBreakupDiameter) {
+  // Heavy rain of large drops: collisions are frequent enough to see in a short run.
+  SimParams p = small_scene();
+  p.rain.far_m = 2.0;
+  p.rain.rate_mm_per_h = 100.0;
+  p.rain.diameter_min_mm = 2.0;
+  p.splashes.enabled = false;
+  World world(p);
+  world.advance_to(0.5);
+  EXPECT_GT(world.merges(), 0u);
+  for (const float d : world.drops().diameter) {
+    EXPECT_LE(d, p.rain.breakup_diameter_mm * 1e-3 + 1e-6);
+  }
+}
+
+TEST(World, LightningShowsBoltsAndFlash) {
+  SimParams p = small_scene();
+  p.rain.far_m = 1.0;
+  p.lightning.enabled = true;
+  p.lightning.strikes_per_minute = 0.0;
+  p.lightning.first_strike_s = 0.1;
+  World world(p);
+  world.advance_to(0.05);
+  EXPECT_TRUE(world.snapshot(1).bolts.empty());
+  EXPECT_EQ(world.snapshot(1).flash, 0.0f);
+  world.advance_to(0.1);
+  const Frame f = world.snapshot(2);
+  ASSERT_EQ(f.bolts.size(), 1u);
+  EXPECT_EQ(f.lightning_strikes, 1u);
+  EXPECT_FLOAT_EQ(f.flash, 1.0f);  // the first return stroke peaks at the strike
+  EXPECT_GT(f.bolts[0].segments.size(), 10u);
+  world.advance_to(0.1 + p.lightning.flash_duration_s + 0.01);
+  EXPECT_TRUE(world.snapshot(3).bolts.empty());
 }
 
 }  // namespace
