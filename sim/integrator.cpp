@@ -20,6 +20,7 @@ void integrate_range(DropState& state, std::size_t begin, std::size_t end, const
   const float dt = c.dt, inv_dt = 1.0f / c.dt;
   const auto g = static_cast<float>(kGravity);
   const bool turbulent = c.turbulence != nullptr;
+  const bool fading = c.fading;
   for (std::size_t i = begin; i < end; ++i) {
     const glm::vec3 p = pos[i], v = vel[i];
     glm::vec3 w = c.wind;
@@ -34,8 +35,8 @@ void integrate_range(DropState& state, std::size_t begin, std::size_t end, const
     vel[i] = vn;
     pos[i] = pn;
     age[i] += dt;
-    const float o = opacity[i] / (1.0f + rate[i] * dt);
-    opacity[i] = o;
+    const float o = fading ? opacity[i] / (1.0f + rate[i] * dt) : opacity[i];
+    if (fading) opacity[i] = o;
     const float rx = pn.x - c.origin.x, rz = pn.z - c.origin.z;
     const float a = rx * c.across.x + rz * c.across.z;
     const float b = rx * c.along.x + rz * c.along.z;

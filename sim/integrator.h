@@ -26,6 +26,7 @@ struct StepConstants {
   glm::vec3 along{0.0f, 0.0f, 1.0f};
   float a0 = 0, a1 = 0, b0 = 0, b1 = 0, ground = 0, ceiling = 0;
   float min_opacity = 0.0f;  ///< drops faded below this leave
+  bool fading = false;       ///< any drop has a vanishing rate > 0 (else opacity stays put)
 };
 
 /// Indices (ascending) of drops that reached the ground, and of drops that left otherwise.

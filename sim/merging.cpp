@@ -49,9 +49,11 @@ MergeResult merge_touching(DropState& state, float interval_s, float cell_h_m, f
     x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
     z0 = std::min(z0, p.z), z1 = std::max(z1, p.z);
   }
-  // Wide regions get coarser columns so the grid stays bounded (more candidates, same result).
-  const float cell =
-      std::max({cell_h_m, (x1 - x0) / kMaxColumnsPerAxis, (z1 - z0) / kMaxColumnsPerAxis});
+  // No more columns than drops: finer grids only add empty columns to clear and scan (and
+  // memory), hardly fewer candidates. The result is the same whatever the column size.
+  const float by_count = std::sqrt((x1 - x0) * (z1 - z0) / static_cast<float>(n));
+  const float cell = std::max(
+      {cell_h_m, by_count, (x1 - x0) / kMaxColumnsPerAxis, (z1 - z0) / kMaxColumnsPerAxis});
   const auto nx = static_cast<std::int64_t>((x1 - x0) / cell) + 1;
   const auto nz = static_cast<std::int64_t>((z1 - z0) / cell) + 1;
   auto column_x = [&](const glm::vec3& p) {
@@ -78,8 +80,12 @@ MergeResult merge_touching(DropState& state, float interval_s, float cell_h_m, f
     }
   }
   std::vector<std::uint8_t> dead(n, 0), grown(n, 0);
-  for (std::size_t i = 0; i < n; ++i) {
+  // Walk drops column by column so neighbouring columns are in cache; the pair rule j > i
+  // still tests each pair once, and the walk order is fixed, so results are deterministic.
+  for (std::size_t walk = 0; walk < n; ++walk) {
+    const std::size_t i = sorted_index[walk];
     if (dead[i]) continue;
+    const glm::vec3 pi = d.position[i];
     const std::int64_t cx = column_x(d.position[i]), cz = column_z(d.position[i]);
     const std::int64_t xa = std::max<std::int64_t>(cx - 1, 0), xb = std::min(cx + 1, nx - 1);
     for (std::int64_t z = std::max<std::int64_t>(cz - 1, 0); z <= std::min(cz + 1, nz - 1); ++z) {
@@ -88,7 +94,7 @@ MergeResult merge_touching(DropState& state, float interval_s, float cell_h_m, f
       const std::uint32_t k1 = start[static_cast<std::size_t>(xb + nx * z) + 1];
       for (std::uint32_t k = k0; k < k1; ++k) {
         const std::uint32_t j = sorted_index[k];
-        if (j <= i || dead[j] || std::abs(sorted_pos[k].y - d.position[i].y) > cell_v_m) continue;
+        if (std::abs(sorted_pos[k].y - pi.y) > cell_v_m || j <= i || dead[j]) continue;
         const glm::vec3 dp = d.position[j] - d.position[i];
         const glm::vec3 dv = d.velocity[j] - d.velocity[i];
         const float window = std::min({interval_s, d.age[i], d.age[j]});

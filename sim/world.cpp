@@ -199,6 +199,7 @@ void World::step() {
   c.ground = static_cast<float>(m_region.ground());
   c.ceiling = static_cast<float>(m_region.ceiling());
   c.min_opacity = kMinOpacity;
+  c.fading = m_params.rain.vanishing_rate_per_s > 0.0;
 
   step_splashes(m_splash, m_params.splashes, c.dt, c.ground);
 
