@@ -48,8 +48,8 @@ section.FAIL,section.MISSING,section.ERROR{border-color:#c22}
 .PASS .badge{background:#2a2}.WARN .badge{background:#d90}
 .FAIL .badge,.MISSING .badge,.ERROR .badge{background:#c22}
 .row{display:flex;flex-wrap:wrap;gap:1em}figure{margin:0}
-img{image-rendering:pixelated;min-width:320px;max-width:100%;border:1px solid #ccc}
-.none{width:320px;height:180px;display:flex;align-items:center;justify-content:center;background:#ddd}
+img{image-rendering:pixelated;min-width:300px;max-width:100%;border:1px solid #ccc}
+.none{width:300px;height:169px;display:flex;align-items:center;justify-content:center;background:#ddd}
 table{border-collapse:collapse;margin:.5em 0}td,th{padding:.15em .6em;text-align:right;border-bottom:1px solid #eee}
 th{text-align:left}code{word-break:break-all})";
 
