@@ -1,58 +1,139 @@
-// The hot loop (see integrator.h): no allocation, no branches in the arithmetic; the only
-// branch is the rarely taken event push.
+// The hot loop (see integrator.h). Drops go through in blocks: first a branch-free arithmetic
+// pass over plain float arrays (so the compiler can vectorise it) that also writes an
+// "event" byte per drop, then a scan of those bytes that collects the rare events. Turbulence
+// (a per-drop wind) is evaluated into a block buffer before the arithmetic pass.
 #include "sim/integrator.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "sim/terminal_velocity.h"
 
 namespace raintrace::sim {
+namespace {
+
+constexpr std::size_t kBlock = 256;
+
+enum : std::uint8_t { kStay = 0, kGround = 1, kGone = 2 };
+
+// Block-local structure of arrays: the Frame's vec3 arrays are interleaved (x, y, z), which
+// compilers do not vectorise well, so each block is transposed in, computed, transposed out.
+struct Block {
+  std::array<float, kBlock> px, py, pz, vx, vy, vz, ax, ay, az, wx, wy, wz;
+  std::array<std::uint8_t, kBlock> event;
+};
+
+// One block of drops [begin, begin + n). b.wx/wy/wz hold the per-drop wind when kTurbulent,
+// else the uniform wind c.wind applies.
+template <bool kTurbulent, bool kFading>
+void integrate_block(DropState& state, std::size_t begin, std::size_t n, const StepConstants& c,
+                     Block& b) {
+  glm::vec3* pos = state.drops.position.data() + begin;
+  glm::vec3* vel = state.drops.velocity.data() + begin;
+  glm::vec3* acc = state.drops.acceleration.data() + begin;
+  for (std::size_t i = 0; i < n; ++i) {
+    b.px[i] = pos[i].x, b.py[i] = pos[i].y, b.pz[i] = pos[i].z;
+    b.vx[i] = vel[i].x, b.vy[i] = vel[i].y, b.vz[i] = vel[i].z;
+  }
+  float* __restrict age = state.drops.age.data() + begin;
+  float* __restrict opacity = state.drops.opacity.data() + begin;
+  const float* __restrict rate = state.drops.vanishing_rate.data() + begin;
+  const float* __restrict drag = state.drag.data() + begin;
+  const float dt = c.dt, inv_dt = 1.0f / c.dt;
+  const auto g = static_cast<float>(kGravity);
+  const float ox = c.origin.x, oz = c.origin.z;
+  const float ax = c.across.x, az = c.across.z, bx = c.along.x, bz = c.along.z;
+  // Locals, not c's fields: the stores below could alias c as far as the compiler knows,
+  // which would force reloads and block vectorisation.
+  const float cwx = c.wind.x, cwy = c.wind.y, cwz = c.wind.z;
+  const float a0 = c.a0, a1 = c.a1, b0 = c.b0, b1 = c.b1;
+  const float ceiling = c.ceiling, ground = c.ground, min_opacity = c.min_opacity;
+  float* __restrict px = b.px.data();
+  float* __restrict py = b.py.data();
+  float* __restrict pz = b.pz.data();
+  float* __restrict vx = b.vx.data();
+  float* __restrict vy = b.vy.data();
+  float* __restrict vz = b.vz.data();
+  float* __restrict acx = b.ax.data();
+  float* __restrict acy = b.ay.data();
+  float* __restrict acz = b.az.data();
+  const float* __restrict bwx = b.wx.data();
+  const float* __restrict bwy = b.wy.data();
+  const float* __restrict bwz = b.wz.data();
+  std::uint8_t* __restrict event = b.event.data();
+  for (std::size_t i = 0; i < n; ++i) {
+    const float wx = kTurbulent ? bwx[i] : cwx;
+    const float wy = kTurbulent ? bwy[i] : cwy;
+    const float wz = kTurbulent ? bwz[i] : cwz;
+    const float ux = wx - vx[i], uy = wy - vy[i], uz = wz - vz[i];
+    const float ku = drag[i] * std::sqrt(ux * ux + uy * uy + uz * uz);
+    const float inv = 1.0f / (1.0f + ku * dt);
+    const float nx = (vx[i] + dt * ku * wx) * inv;
+    const float ny = (vy[i] + dt * (ku * wy - g)) * inv;
+    const float nz = (vz[i] + dt * ku * wz) * inv;
+    acx[i] = (nx - vx[i]) * inv_dt;
+    acy[i] = (ny - vy[i]) * inv_dt;
+    acz[i] = (nz - vz[i]) * inv_dt;
+    vx[i] = nx, vy[i] = ny, vz[i] = nz;
+    const float qx = px[i] + dt * nx, qy = py[i] + dt * ny, qz = pz[i] + dt * nz;
+    px[i] = qx, py[i] = qy, pz[i] = qz;
+    age[i] += dt;
+    float o = opacity[i];
+    if constexpr (kFading) {
+      o = o / (1.0f + rate[i] * dt);
+      opacity[i] = o;
+    }
+    const float rx = qx - ox, rz = qz - oz;
+    const float a = rx * ax + rz * az;
+    const float bb = rx * bx + rz * bz;
+    // Written so that NaN anywhere makes `inside` false and the drop leaves.
+    const int inside = static_cast<int>(a >= a0) & static_cast<int>(a <= a1) &
+                       static_cast<int>(bb >= b0) & static_cast<int>(bb <= b1) &
+                       static_cast<int>(qy <= ceiling) & static_cast<int>(o >= min_opacity);
+    const int below = static_cast<int>(!(qy > ground));
+    // kGone if outside, else kGround if below, else kStay — without a branch.
+    event[i] = static_cast<std::uint8_t>(kGone - inside * (kGone - below * kGround));
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    pos[i] = {b.px[i], b.py[i], b.pz[i]};
+    vel[i] = {b.vx[i], b.vy[i], b.vz[i]};
+    acc[i] = {b.ax[i], b.ay[i], b.az[i]};
+  }
+}
+
+template <bool kTurbulent, bool kFading>
+void integrate_all(DropState& state, std::size_t begin, std::size_t end, const StepConstants& c,
+                   StepEvents& events) {
+  Block block;
+  for (std::size_t b = begin; b < end; b += kBlock) {
+    const std::size_t n = std::min(kBlock, end - b);
+    if constexpr (kTurbulent) {
+      for (std::size_t i = 0; i < n; ++i) {
+        const glm::vec3 w =
+            c.wind + c.turbulence->turbulence_at(state.drops.position[b + i], c.time_s);
+        block.wx[i] = w.x, block.wy[i] = w.y, block.wz[i] = w.z;
+      }
+    }
+    integrate_block<kTurbulent, kFading>(state, b, n, c, block);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (block.event[i] == kStay) [[likely]]
+        continue;
+      (block.event[i] == kGround ? events.ground : events.gone)
+          .push_back(static_cast<std::uint32_t>(b + i));
+    }
+  }
+}
+
+}  // namespace
 
 void integrate_range(DropState& state, std::size_t begin, std::size_t end, const StepConstants& c,
                      StepEvents& events) {
-  glm::vec3* __restrict pos = state.drops.position.data();
-  glm::vec3* __restrict vel = state.drops.velocity.data();
-  glm::vec3* __restrict acc = state.drops.acceleration.data();
-  float* __restrict age = state.drops.age.data();
-  float* __restrict opacity = state.drops.opacity.data();
-  const float* __restrict rate = state.drops.vanishing_rate.data();
-  const float* __restrict drag = state.drag.data();
-  const float dt = c.dt, inv_dt = 1.0f / c.dt;
-  const auto g = static_cast<float>(kGravity);
   const bool turbulent = c.turbulence != nullptr;
-  const bool fading = c.fading;
-  for (std::size_t i = begin; i < end; ++i) {
-    const glm::vec3 p = pos[i], v = vel[i];
-    glm::vec3 w = c.wind;
-    if (turbulent) w += c.turbulence->turbulence_at(p, c.time_s);
-    const glm::vec3 u = w - v;
-    const float ku = drag[i] * std::sqrt(u.x * u.x + u.y * u.y + u.z * u.z);
-    const float inv = 1.0f / (1.0f + ku * dt);
-    const glm::vec3 vn{(v.x + dt * ku * w.x) * inv, (v.y + dt * (ku * w.y - g)) * inv,
-                       (v.z + dt * ku * w.z) * inv};
-    const glm::vec3 pn = p + dt * vn;
-    acc[i] = (vn - v) * inv_dt;
-    vel[i] = vn;
-    pos[i] = pn;
-    age[i] += dt;
-    const float o = fading ? opacity[i] / (1.0f + rate[i] * dt) : opacity[i];
-    if (fading) opacity[i] = o;
-    const float rx = pn.x - c.origin.x, rz = pn.z - c.origin.z;
-    const float a = rx * c.across.x + rz * c.across.z;
-    const float b = rx * c.along.x + rz * c.along.z;
-    // Written so that NaN anywhere makes `inside` false and the drop leaves.
-    const bool inside =
-        a >= c.a0 && a <= c.a1 && b >= c.b0 && b <= c.b1 && pn.y <= c.ceiling && o >= c.min_opacity;
-    const bool above_ground = pn.y > c.ground;
-    if (!(inside && above_ground)) [[unlikely]] {
-      const auto idx = static_cast<std::uint32_t>(i);
-      if (inside) {
-        events.ground.push_back(idx);
-      } else {
-        events.gone.push_back(idx);
-      }
-    }
-  }
+  if (turbulent && c.fading) return integrate_all<true, true>(state, begin, end, c, events);
+  if (turbulent) return integrate_all<true, false>(state, begin, end, c, events);
+  if (c.fading) return integrate_all<false, true>(state, begin, end, c, events);
+  integrate_all<false, false>(state, begin, end, c, events);
 }
 
 }  // namespace raintrace::sim

@@ -85,8 +85,9 @@ MergeResult merge_touching(DropState& state, float interval_s, float cell_h_m, f
   for (std::size_t walk = 0; walk < n; ++walk) {
     const std::size_t i = sorted_index[walk];
     if (dead[i]) continue;
-    const glm::vec3 pi = d.position[i];
-    const std::int64_t cx = column_x(d.position[i]), cz = column_z(d.position[i]);
+    // A drop changes only while it is the walker, so its sorted copy is current here.
+    const glm::vec3 pi = sorted_pos[walk];
+    const std::int64_t cx = column_x(pi), cz = column_z(pi);
     const std::int64_t xa = std::max<std::int64_t>(cx - 1, 0), xb = std::min(cx + 1, nx - 1);
     for (std::int64_t z = std::max<std::int64_t>(cz - 1, 0); z <= std::min(cz + 1, nz - 1); ++z) {
       // Columns xa..xb of row z are one contiguous run of the sorted arrays.
