@@ -27,13 +27,13 @@ std::vector<int> pick_evenly(const std::vector<int>& frames, int count) {
 }
 
 ContactSheetResult make_contact_sheet(const std::filesystem::path& out_dir,
-                                      const std::vector<int>& frames, int count) {
+                                      const std::vector<int>& frames, int count, int digits) {
   ContactSheetResult result;
   const auto chosen = pick_evenly(frames, count);
   if (chosen.empty()) return result;
   std::vector<OIIO::ImageBuf> cells;
   for (int f : chosen) {
-    OIIO::ImageBuf in{(out_dir / final_image_name(Pass::image, f)).string()};
+    OIIO::ImageBuf in{(out_dir / final_image_name(Pass::image, f, digits)).string()};
     if (!in.read(0, 0, true, OIIO::TypeDesc::FLOAT)) {
       throw std::runtime_error(
           fmt::format("contact sheet: cannot read frame {}: {}", f, in.geterror()));

@@ -21,6 +21,7 @@ struct ContactSheetResult {
 /// images/frame_NNNN.png, in a grid of ceil(sqrt(n)) columns with a 4-pixel gap and a label
 /// strip under each cell. Throws std::runtime_error when an image cannot be read or written.
 ContactSheetResult make_contact_sheet(const std::filesystem::path& out_dir,
-                                      const std::vector<int>& frames, int count = 9);
+                                      const std::vector<int>& frames, int count = 9,
+                                      int digits = 4);
 
 }  // namespace raintrace::render

@@ -13,8 +13,7 @@ std::vector<int> frames_needing_render(const povgen::Manifest& manifest,
   for (const auto& f : manifest.frames) {
     if (only && (f.number < only->first || f.number > only->last)) continue;
     std::error_code ec;
-    const bool have_image =
-        std::filesystem::is_regular_file(out_dir / final_image_name(Pass::image, f.number), ec);
+    const bool have_image = std::filesystem::is_regular_file(out_dir / f.image, ec);
     const bool up_to_date =
         f.status == "rendered" && !f.input_hash.empty() && f.rendered_hash == f.input_hash;
     if (force || !up_to_date || !have_image) frames.push_back(f.number);
@@ -42,6 +41,15 @@ std::vector<FrameSpan> split_into_spans(const std::vector<int>& frames, int jobs
     spans.push_back(span);
   }
   return spans;
+}
+
+int frame_digits(const povgen::Manifest& manifest) {
+  if (manifest.frames.empty()) return 4;
+  const std::string& image = manifest.frames.front().image;
+  const auto end = image.rfind('.');
+  const auto start = image.find_last_not_of("0123456789", end == std::string::npos ? end : end - 1);
+  if (end == std::string::npos || start == std::string::npos || end - start - 1 == 0) return 4;
+  return static_cast<int>(end - start - 1);
 }
 
 int default_jobs() {

@@ -23,6 +23,10 @@ std::vector<int> frames_needing_render(const povgen::Manifest& manifest,
 /// finish together: about two spans per job, each at most max_span frames, at least 1.
 std::vector<FrameSpan> split_into_spans(const std::vector<int>& frames, int jobs, int max_span);
 
+/// Digits of the frame number in the manifest's image names ("images/frame_00001.png" → 5);
+/// 4 when there are no frames.
+int frame_digits(const povgen::Manifest& manifest);
+
 /// Default number of POV-Ray processes in flight: parsing is single-threaded and tracing uses
 /// every core, so one more process than half the cores keeps them busy (2 on 2 cores).
 int default_jobs();

@@ -18,9 +18,7 @@ void require_povray() {
 }
 
 void clean_temp_images(const std::filesystem::path& out_dir) {
-  for (Pass pass : {Pass::image, Pass::mask}) {
-    std::filesystem::remove_all(out_dir / temp_dir_name(pass));
-  }
+  std::filesystem::remove_all(out_dir / temp_dir_name());
 }
 
 RenderSummary render_local(const std::filesystem::path& out_dir,
@@ -29,6 +27,7 @@ RenderSummary render_local(const std::filesystem::path& out_dir,
   const auto manifest_path = out_dir / "manifest.json";
   povgen::Manifest manifest = povgen::read_manifest(manifest_path);
   clean_temp_images(out_dir);
+  const int digits = frame_digits(manifest);
 
   std::map<int, std::size_t> index_of;
   for (std::size_t i = 0; i < manifest.frames.size(); ++i) index_of[manifest.frames[i].number] = i;
@@ -43,7 +42,7 @@ RenderSummary render_local(const std::filesystem::path& out_dir,
       }
       const bool stale = std::binary_search(frames.begin(), frames.end(), f.number);
       if (settings.force || stale ||
-          !std::filesystem::exists(out_dir / final_image_name(Pass::mask, f.number))) {
+          !std::filesystem::exists(out_dir / final_image_name(Pass::mask, f.number, digits))) {
         masks.push_back(f.number);
       }
     }
@@ -83,6 +82,7 @@ RenderSummary render_local(const std::filesystem::path& out_dir,
   runner.jobs = jobs;
   runner.width = manifest.width;
   runner.height = manifest.height;
+  runner.digits = digits;
   runner.stop = settings.stop;
   RunnerCallbacks callbacks;
   callbacks.on_rendered = [&](Pass pass, int frame, double seconds) {

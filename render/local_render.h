@@ -27,7 +27,7 @@ struct LocalRenderSettings {
   int jobs = 2;        ///< POV-Ray processes in flight, >= 1
   int max_span = 12;   ///< most frames one POV-Ray process renders
   bool force = false;  ///< re-render frames that are up to date
-  bool mask = false;   ///< also render masks/frame_NNNN.png (scene.ini + RaintraceMask=1)
+  bool mask = false;   ///< also render images/mask_NNNN.png (mask.ini, from export --mask)
   std::optional<FrameSpan> only;  ///< restrict to these frames
   const std::atomic<bool>* stop = nullptr;
   std::function<void(const RenderProgress&)> on_progress;  ///< ~10×/s and on every frame
@@ -48,7 +48,7 @@ RenderSummary render_local(const std::filesystem::path& out_dir,
 /// Throws the "POV-Ray not found" error unless `povray` is in PATH.
 void require_povray();
 
-/// Removes images/.tmp and masks/.tmp: whatever is there was left by a killed run and is
+/// Removes images/.tmp: whatever is there was left by a killed run and is
 /// never trusted.
 void clean_temp_images(const std::filesystem::path& out_dir);
 

@@ -43,6 +43,21 @@ TEST_F(PovrayLocalRender, RendersEveryFrameToAValidImageAndRecordsItInTheManifes
   EXPECT_TRUE(std::filesystem::is_empty(dir / "images/.tmp"));
 }
 
+TEST_F(PovrayLocalRender, MaskOptionAlsoRendersMaskImagesFromMaskIni) {
+  const auto dir = testing::fresh_test_dir("mask");
+  testing::write_test_folder(dir, {.frames = 3});
+  auto with_masks = settings(2);
+  with_masks.mask = true;
+  const auto summary = render_local(dir, with_masks);
+  EXPECT_TRUE(summary.failures.empty());
+  EXPECT_EQ(summary.progress.done, 6);  // 3 images + 3 masks
+  for (int f = 1; f <= 3; ++f) {
+    EXPECT_TRUE(image_is_complete(dir / final_image_name(Pass::mask, f), 64, 36)) << f;
+  }
+  // Masks already there and frames unchanged: nothing to do.
+  EXPECT_EQ(render_local(dir, with_masks).progress.total, 0);
+}
+
 TEST_F(PovrayLocalRender, RerunRendersOnlyFramesWhoseInputsChanged) {
   const auto dir = testing::fresh_test_dir("resume");
   testing::write_test_folder(dir, {.frames = 4});

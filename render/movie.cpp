@@ -9,7 +9,7 @@
 namespace raintrace::render {
 namespace {
 
-std::vector<std::string> input_args(double fps, int first_frame) {
+std::vector<std::string> input_args(double fps, int first_frame, int digits) {
   return {"ffmpeg",
           "-hide_banner",
           "-loglevel",
@@ -20,13 +20,14 @@ std::vector<std::string> input_args(double fps, int first_frame) {
           "-start_number",
           std::to_string(first_frame),
           "-i",
-          "images/frame_%04d.png"};
+          fmt::format("images/frame_%0{}d.png", digits)};
 }
 
 }  // namespace
 
-std::vector<std::string> mp4_argv(double fps, int first_frame, const std::string& output) {
-  auto argv = input_args(fps, first_frame);
+std::vector<std::string> mp4_argv(double fps, int first_frame, const std::string& output,
+                                  int digits) {
+  auto argv = input_args(fps, first_frame, digits);
   // libx264 with yuv420p needs even width and height: round down by at most one pixel.
   argv.insert(argv.end(),
               {"-vf", "scale=trunc(iw/2)*2:trunc(ih/2)*2", "-c:v", "libx264", "-pix_fmt", "yuv420p",
@@ -34,8 +35,9 @@ std::vector<std::string> mp4_argv(double fps, int first_frame, const std::string
   return argv;
 }
 
-std::vector<std::string> gif_argv(double fps, int first_frame, const std::string& output) {
-  auto argv = input_args(fps, first_frame);
+std::vector<std::string> gif_argv(double fps, int first_frame, const std::string& output,
+                                  int digits) {
+  auto argv = input_args(fps, first_frame, digits);
   argv.insert(argv.end(), {"-filter_complex",
                            "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither="
                            "bayer:bayer_scale=3",
@@ -43,7 +45,8 @@ std::vector<std::string> gif_argv(double fps, int first_frame, const std::string
   return argv;
 }
 
-MovieResult make_movies(const std::filesystem::path& out_dir, double fps, int first_frame) {
+MovieResult make_movies(const std::filesystem::path& out_dir, double fps, int first_frame,
+                        int digits) {
   MovieResult result;
   if (!find_program("ffmpeg")) {
     result.warning =
@@ -69,8 +72,8 @@ MovieResult make_movies(const std::filesystem::path& out_dir, double fps, int fi
           "ffmpeg failed making {} (exit code {}, see logs/{}.ffmpeg.log)", name, code, name);
     }
   };
-  run(mp4_argv(fps, first_frame, ".tmp.animation.mp4"), "animation.mp4", result.mp4);
-  run(gif_argv(fps, first_frame, ".tmp.animation.gif"), "animation.gif", result.gif);
+  run(mp4_argv(fps, first_frame, ".tmp.animation.mp4", digits), "animation.mp4", result.mp4);
+  run(gif_argv(fps, first_frame, ".tmp.animation.gif", digits), "animation.gif", result.gif);
   return result;
 }
 

@@ -9,9 +9,11 @@
 namespace raintrace::render {
 
 /// ffmpeg argv for the MP4 of images/frame_%04d.png from first_frame on, written to output.
-std::vector<std::string> mp4_argv(double fps, int first_frame, const std::string& output);
+std::vector<std::string> mp4_argv(double fps, int first_frame, const std::string& output,
+                                  int digits = 4);
 /// ffmpeg argv for the GIF (palettegen + paletteuse in one filter graph).
-std::vector<std::string> gif_argv(double fps, int first_frame, const std::string& output);
+std::vector<std::string> gif_argv(double fps, int first_frame, const std::string& output,
+                                  int digits = 4);
 
 struct MovieResult {
   std::filesystem::path mp4;  ///< empty when not made
@@ -22,6 +24,7 @@ struct MovieResult {
 /// Makes out_dir/animation.mp4 and out_dir/animation.gif from the frames, each through a temp
 /// name renamed on success. Never throws for a missing or failing ffmpeg: that is a warning,
 /// the frames are the result that matters.
-MovieResult make_movies(const std::filesystem::path& out_dir, double fps, int first_frame);
+MovieResult make_movies(const std::filesystem::path& out_dir, double fps, int first_frame,
+                        int digits = 4);
 
 }  // namespace raintrace::render

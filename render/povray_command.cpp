@@ -7,24 +7,34 @@
 
 namespace raintrace::render {
 
-std::string final_image_name(Pass pass, int frame) {
-  return fmt::format("{}/frame_{:04d}.png", pass == Pass::image ? "images" : "masks", frame);
+namespace {
+const char* prefix(Pass pass) { return pass == Pass::image ? "frame" : "mask"; }
+}  // namespace
+
+std::string final_image_name(Pass pass, int frame, int digits) {
+  return fmt::format("images/{}_{:0{}d}.png", prefix(pass), frame, digits);
 }
 
-std::string temp_dir_name(Pass pass) { return pass == Pass::image ? "images/.tmp" : "masks/.tmp"; }
+std::string temp_dir_name() { return "images/.tmp"; }
 
-std::string temp_image_name(Pass pass, int frame) {
-  return fmt::format("{}/frame_{:04d}.png", temp_dir_name(pass), frame);
+std::string temp_image_name(Pass pass, int frame, int digits) {
+  return fmt::format("{}/{}_{:0{}d}.png", temp_dir_name(), prefix(pass), frame, digits);
 }
 
-std::vector<std::string> povray_argv(Pass pass, const FrameSpan& span) {
-  std::vector<std::string> argv{"povray", "scene.ini"};
-  if (pass == Pass::mask) argv.emplace_back("Declare=RaintraceMask=1");
+std::vector<std::string> povray_argv(Pass pass, const FrameSpan& span, int digits) {
   // POV-Ray appends the frame number (padded to Final_Frame's digits) before the extension.
-  argv.insert(argv.end(),
-              {"-D", "+FN", "-V", "-GR", "+L.", "+O" + temp_dir_name(pass) + "/frame_.png", "+KFI1",
-               "+KFF9999", fmt::format("+SF{}", span.first), fmt::format("+EF{}", span.last)});
-  return argv;
+  return {"povray",
+          pass == Pass::image ? "scene.ini" : "mask.ini",
+          "-D",
+          "+FN",
+          "-V",
+          "-GR",
+          "+L.",
+          fmt::format("+O{}/{}_.png", temp_dir_name(), prefix(pass)),
+          "+KFI1",
+          "+KFF" + std::string(static_cast<std::size_t>(digits), '9'),
+          fmt::format("+SF{}", span.first),
+          fmt::format("+EF{}", span.last)};
 }
 
 std::map<std::string, std::string> povray_env(const std::filesystem::path& out_dir) {

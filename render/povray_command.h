@@ -16,26 +16,28 @@ struct FrameSpan {
   int count() const { return last - first + 1; }
 };
 
-/// The scene variant a process renders.
+/// The scene variant a process renders (the exporter writes both ini files).
 enum class Pass {
   image,  ///< scene.ini → images/frame_NNNN.png
-  mask,   ///< scene.ini with Declare=RaintraceMask=1 → masks/frame_NNNN.png
+  mask,   ///< mask.ini (rain white on black) → images/mask_NNNN.png
 };
 
 /// Where a frame's finished image lives, relative to the output folder:
-/// "images/frame_0007.png" or "masks/frame_0007.png".
-std::string final_image_name(Pass pass, int frame);
+/// "images/frame_0007.png" or "images/mask_0007.png"; `digits` as in the frame file names
+/// (4, more past 9999 frames).
+std::string final_image_name(Pass pass, int frame, int digits = 4);
 /// Where POV-Ray writes it first ("images/.tmp/frame_0007.png"); renamed only once verified.
-std::string temp_image_name(Pass pass, int frame);
+std::string temp_image_name(Pass pass, int frame, int digits = 4);
 /// The folder of temp_image_name, relative to the output folder.
-std::string temp_dir_name(Pass pass);
+std::string temp_dir_name();
 
 /// argv for `povray` rendering `span` of the folder's animation. Runs with the output folder as
 /// working directory (relative includes resolve there, +L. adds it to the library path):
 ///   povray scene.ini -D +FN -V -GR +L. +Oimages/.tmp/frame_.png +KFI1 +KFF9999 +SFa +EFb
 /// -D: headless; -V -GR: quiet but keeps POV-Ray's "File '…' line N:" error lines (POVRAY-NOTES);
-/// +KFI1 +KFF9999 keep clock and 4-digit names identical to scene.ini's whole animation.
-std::vector<std::string> povray_argv(Pass pass, const FrameSpan& span);
+/// +KFI1 +KFF9999 (as many nines as `digits`) keep frame_number and the zero-padded names
+/// identical to the ini's whole animation.
+std::vector<std::string> povray_argv(Pass pass, const FrameSpan& span, int digits = 4);
 
 /// Environment for POV-Ray: HOME = out_dir, where prepare_povray_home() put an empty
 /// .povray/3.7/povray.conf (silences the harmless "cannot open user configuration" warning).

@@ -14,16 +14,24 @@ TEST(PovArgv, RendersASpanOfTheWholeAnimationHeadlessIntoTheTempFolder) {
   EXPECT_EQ(argv, expected);
 }
 
-TEST(PovArgv, MaskPassDeclaresTheMaskSwitchAndWritesToMasks) {
+TEST(PovArgv, MaskPassUsesMaskIniAndMaskNames) {
   const auto argv = povray_argv(Pass::mask, {1, 1});
-  EXPECT_NE(std::find(argv.begin(), argv.end(), "Declare=RaintraceMask=1"), argv.end());
-  EXPECT_NE(std::find(argv.begin(), argv.end(), "+Omasks/.tmp/frame_.png"), argv.end());
+  EXPECT_EQ(argv[1], "mask.ini");
+  EXPECT_NE(std::find(argv.begin(), argv.end(), "+Oimages/.tmp/mask_.png"), argv.end());
+}
+
+TEST(PovArgv, FinalFrameHasAsManyNinesAsTheFileNamesHaveDigits) {
+  // 12 000 frames → 5-digit names; Final_Frame 99999 makes POV-Ray pad to 5 as well.
+  const auto argv = povray_argv(Pass::image, {10000, 10010}, 5);
+  EXPECT_NE(std::find(argv.begin(), argv.end(), "+KFF99999"), argv.end());
+  EXPECT_EQ(final_image_name(Pass::image, 10000, 5), "images/frame_10000.png");
+  EXPECT_EQ(temp_image_name(Pass::image, 7, 5), "images/.tmp/frame_00007.png");
 }
 
 TEST(ImageNames, AreFourDigitLikeScenesFinalFrame9999) {
   EXPECT_EQ(final_image_name(Pass::image, 7), "images/frame_0007.png");
   EXPECT_EQ(temp_image_name(Pass::image, 12), "images/.tmp/frame_0012.png");
-  EXPECT_EQ(final_image_name(Pass::mask, 123), "masks/frame_0123.png");
+  EXPECT_EQ(final_image_name(Pass::mask, 123), "images/mask_0123.png");
 }
 
 // Verbatim tail of a POV-Ray 3.7.0.10 log (-V -GR) whose frame 3 had a bad token.

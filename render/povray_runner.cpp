@@ -83,14 +83,14 @@ class Runner {
   Running start(const RenderJob& job) {
     Running r;
     r.job = job;
-    r.argv = povray_argv(job.pass, job.span);
+    r.argv = povray_argv(job.pass, job.span, m_settings.digits);
     r.log = fmt::format("logs/{}_{:04d}-{:04d}.log", job.pass == Pass::image ? "image" : "mask",
                         job.span.first, job.span.last);
     r.next_frame = job.span.first;
-    std::filesystem::create_directories(m_out / temp_dir_name(job.pass));
+    std::filesystem::create_directories(m_out / temp_dir_name());
     // A leftover temp image of a frame about to render must never be mistaken for new output.
     for (int f = job.span.first; f <= job.span.last; ++f) {
-      std::filesystem::remove(m_out / temp_image_name(job.pass, f));
+      std::filesystem::remove(m_out / temp_image_name(job.pass, f, m_settings.digits));
     }
     ProcessSpec spec;
     spec.argv = r.argv;
@@ -106,9 +106,9 @@ class Runner {
   // go after tracing it, so "decodes completely" means "finished".
   void promote_ready(Running& r) {
     while (r.next_frame <= r.job.span.last) {
-      const auto temp = m_out / temp_image_name(r.job.pass, r.next_frame);
+      const auto temp = m_out / temp_image_name(r.job.pass, r.next_frame, m_settings.digits);
       if (!image_is_complete(temp, m_settings.width, m_settings.height)) return;
-      const auto final_path = m_out / final_image_name(r.job.pass, r.next_frame);
+      const auto final_path = m_out / final_image_name(r.job.pass, r.next_frame, m_settings.digits);
       std::filesystem::create_directories(final_path.parent_path());
       std::filesystem::rename(temp, final_path);
       const double seconds = seconds_since(r.since);
@@ -132,10 +132,10 @@ class Runner {
     failure.error_lines = povray_error_lines(read_text(m_out / r.log));
     if (failure.error_lines.empty()) {
       std::string why;
-      image_is_complete(m_out / temp_image_name(r.job.pass, r.next_frame), m_settings.width,
-                        m_settings.height, &why);
+      image_is_complete(m_out / temp_image_name(r.job.pass, r.next_frame, m_settings.digits),
+                        m_settings.width, m_settings.height, &why);
       failure.error_lines.push_back(
-          fmt::format("{}: {}", temp_image_name(r.job.pass, r.next_frame), why));
+          fmt::format("{}: {}", temp_image_name(r.job.pass, r.next_frame, m_settings.digits), why));
     }
     if (m_callbacks.on_failed) m_callbacks.on_failed(failure);
     // The frames after the failed one were never reached: they get their own process, ahead of

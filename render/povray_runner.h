@@ -43,6 +43,7 @@ struct RunnerSettings {
   int jobs = 2;   ///< POV-Ray processes in flight, >= 1
   int width = 0;  ///< expected image size (from the manifest)
   int height = 0;
+  int digits = 4;  ///< digits in frame numbers of file names (frame_digits(manifest))
   /// Set from a signal handler: children are stopped, finished images kept.
   const std::atomic<bool>* stop = nullptr;
 };

@@ -173,6 +173,7 @@ RenderSummary render_slurm(const std::filesystem::path& out_dir_in,
   Merger{out_dir, manifest, summary}.merge_all();
   summary = {};
   clean_temp_images(out_dir);
+  const int digits = frame_digits(manifest);
 
   const auto frames = frames_needing_render(manifest, out_dir, settings.force, settings.only);
   std::vector<int> masks;
@@ -182,7 +183,7 @@ RenderSummary render_slurm(const std::filesystem::path& out_dir_in,
         continue;
       }
       if (settings.force || std::binary_search(frames.begin(), frames.end(), f.number) ||
-          !std::filesystem::exists(out_dir / final_image_name(Pass::mask, f.number))) {
+          !std::filesystem::exists(out_dir / final_image_name(Pass::mask, f.number, digits))) {
         masks.push_back(f.number);
       }
     }
@@ -267,7 +268,7 @@ RenderSummary render_slurm(const std::filesystem::path& out_dir_in,
           plan["tasks"][static_cast<std::size_t>(t)][pass == Pass::image ? "images" : "masks"];
       for (const auto& span : spans_from_json(spans)) {
         for (int f = span.first; f <= span.last; ++f) {
-          if (std::filesystem::exists(out_dir / final_image_name(pass, f))) {
+          if (std::filesystem::exists(out_dir / final_image_name(pass, f, digits))) {
             bool recorded = false;
             for (const auto& e : manifest.frames) {
               recorded |= pass == Pass::mask || (e.number == f && e.status == "rendered" &&
@@ -323,6 +324,7 @@ int run_slurm_task(const std::filesystem::path& out_dir_in, int task_index,
   runner.jobs = 1;  // Slurm gave this task its share of the node; POV-Ray traces multi-threaded
   runner.width = manifest.width;
   runner.height = manifest.height;
+  runner.digits = frame_digits(manifest);
   runner.stop = stop;
   bool all_ok = true;
   RunnerCallbacks callbacks;

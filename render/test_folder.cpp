@@ -43,11 +43,19 @@ void write_test_folder(const std::filesystem::path& dir, const TestFolderSpec& s
   write_file(dir / "scene.pov",
              "#version 3.7;\n#include concat(\"frames/frame_\", str(frame_number, -4, 0), "
              "\".pov\")\n");
+  write_file(dir / "mask.ini", fmt::format("Input_File_Name=mask.pov\nInitial_Frame=1\n"
+                                           "Final_Frame=9999\nWidth={}\nHeight={}\n"
+                                           "Antialias=off\n",
+                                           spec.width, spec.height));
+  write_file(dir / "mask.pov",
+             "#version 3.7;\n#include concat(\"frames/mask_\", str(frame_number, -4, 0), "
+             "\".pov\")\n");
   write_file(dir / "scene.inc",
              "global_settings { assumed_gamma 1.0 }\n"
              "camera { location <0,0,-5> look_at <0,0,0> }\n"
              "light_source { <5,5,-5> rgb 1 }\nbackground { rgb 0.05 }\n"
-             "#ifdef (RaintraceMask) #default { finish { ambient 1 diffuse 0 } } #end\n");
+             "#ifndef (RT_Mask) #declare RT_Mask = 0; #end\n"
+             "#if (RT_Mask) #default { finish { ambient 1 diffuse 0 } } #end\n");
   povgen::Manifest manifest;
   manifest.raintrace_version = "test";
   manifest.width = spec.width;
@@ -62,6 +70,8 @@ void write_test_folder(const std::filesystem::path& dir, const TestFolderSpec& s
     entry.image = fmt::format("images/frame_{:04d}.png", f);
     entry.input_hash = povgen::content_hash(text);
     write_file(dir / entry.scene, text);
+    write_file(dir / fmt::format("frames/mask_{:04d}.pov", f),
+               fmt::format("#declare RT_Mask = 1;\n#include \"frames/frame_{:04d}.pov\"\n", f));
     manifest.frames.push_back(entry);
   }
   povgen::write_manifest(dir / "manifest.json", manifest);
