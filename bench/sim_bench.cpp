@@ -39,10 +39,10 @@ void BM_WorldStep(benchmark::State& state) {
   const SimParams p = scene_with(static_cast<double>(state.range(0)),
                                  static_cast<int>(state.range(1)), state.range(2) != 0);
   World world(p);
-  // One iteration = 5 substeps (10 ms), the merging period, so merging cost is averaged in.
+  // One iteration = 20 substeps (40 ms), the merging period, so merging cost is averaged in.
   double drop_steps = 0.0;
   for (auto _ : state) {
-    for (int k = 0; k < 5; ++k) {
+    for (int k = 0; k < 20; ++k) {
       drop_steps += static_cast<double>(world.drops().size());
       world.step();
     }

@@ -100,7 +100,8 @@ struct SimParams {
   /// results do not depend on the frame rate. Default 0.002.
   double substep_s = 0.002;
   /// Simulated time before frame 1 so the volume is already full of falling rain, seconds,
-  /// in [0, 60]. Default: long enough for drops to cross the ceiling margin (set by World).
+  /// in [0, 60]. Default −1: World picks max(0.2, splashes.lifetime_s + 0.05) — the volume
+  /// is filled at steady-state density first, so only splashes and merging need the time.
   double prewarm_s = -1.0;
   /// Worker threads for a step; 0 = all cores. Results never depend on it.
   int threads = 0;
