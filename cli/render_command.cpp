@@ -56,7 +56,7 @@ Examples:
   raintrace render examples/default.toml -o out/default --frames 1-24   # a range (or 7)
   raintrace render examples/default.toml -o out/default --jobs 3   # POV-Ray processes in flight
   raintrace render examples/default.toml -o out/small --width 320 --height 240
-  raintrace render examples/default.toml -o out/final --quality final   # antialiased, +Q9
+  raintrace render examples/default.toml -o out/final --quality final   # antialiased
   raintrace render examples/default.toml -o out/default --mask     # also images/mask_NNNN.png
   raintrace render examples/default.toml -o out/default --force    # re-render every frame
   raintrace render out/default                                     # an already exported folder
@@ -299,7 +299,8 @@ Command register_render_command(CLI::App& app) {
       ->check(CLI::Range(16, 8192));
   sub->add_option("--height", args->height, "Image height in pixels (overrides the scene)")
       ->check(CLI::Range(16, 8192));
-  sub->add_option("--quality", args->quality, "preview (no AA, +Q5) or final (AA, +Q9)")
+  sub->add_option("--quality", args->quality,
+                  "preview (no antialiasing) or final (adaptive antialiasing)")
       ->check(CLI::IsMember({"preview", "final"}));
   sub->add_flag("--mask", args->mask, "Also render rain masks (images/mask_NNNN.png)");
   sub->add_flag("--force", args->force, "Re-render frames that are already up to date");
