@@ -1,19 +1,38 @@
 // The `raintrace` program: parses the command line, runs one subcommand, and is the only place
 // that turns an exception into one line for the user and an exit code.
+#include <fmt/core.h>
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
-#include <fmt/core.h>
 #include <vector>
 
 #include "cli/command.h"
 #include "cli/exit_codes.h"
+
+namespace {
+
+constexpr const char* kFooter = R"(
+Commands, each with an example (`raintrace COMMAND --help` shows all options and more):
+  simulate  rain statistics without rendering
+            raintrace simulate examples/default.toml --stats stats.json
+  export    POV-Ray files only (plain `povray scene.ini` renders them)
+            raintrace export examples/default.toml -o out/default
+  render    simulate, export and ray-trace with POV-Ray, then movie and contact sheet
+            raintrace render examples/default.toml -o out/default
+  compare   image metrics and a difference report between two images or folders
+            raintrace compare tests/reference/default out/default/images
+
+Scene files: docs/scene-format.md; examples: examples/*.toml.
+Exit codes: 0 success, 1 partly failed (frames, image differences), 2 unusable input.)";
+
+}  // namespace
 
 int main(int argc, char** argv) {
   namespace cli = raintrace::cli;
   CLI::App app{
       "raintrace: physically based rain, simulated and ray-traced with POV-Ray.\n"
       "Example: raintrace render examples/default.toml -o out/default"};
+  app.footer(kFooter);
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string{"raintrace " RAINTRACE_VERSION});
   const std::vector<cli::Command> commands{
@@ -22,7 +41,9 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version exit 0; every real parse error is "bad option", exit code 2.
+    const int code = app.exit(e);
+    return code == 0 ? cli::exit_code::ok : cli::exit_code::error;
   }
   try {
     for (const auto& command : commands) {
