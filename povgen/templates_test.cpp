@@ -2,6 +2,8 @@
 #include "povgen/templates.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -16,7 +18,10 @@ namespace fs = std::filesystem;
 class UserInclude : public ::testing::Test {
  protected:
   void SetUp() override {
-    m_root = fs::temp_directory_path() / "raintrace_templates_test";
+    // ctest runs each test in its own process, in parallel: one folder per test and process.
+    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    m_root = fs::temp_directory_path() / ("raintrace_templates_test_" + std::string{test->name()} +
+                                          "_" + std::to_string(::getpid()));
     fs::remove_all(m_root);
     fs::create_directories(m_root / "scene" / "inc");
     std::ofstream(m_root / "scene" / "inc" / "mine.inc") << "sphere{0,1}\n";
