@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "cli/scene.h"
@@ -19,7 +20,10 @@ namespace fs = std::filesystem;
 class IncludePath : public testing::Test {
  protected:
   void SetUp() override {
-    m_root = fs::path(testing::TempDir()) / "raintrace_include_test";
+    // ctest runs tests in parallel processes: one folder per test.
+    m_root = fs::path(testing::TempDir()) /
+             ("raintrace_include_test_" +
+              std::string{testing::UnitTest::GetInstance()->current_test_info()->name()});
     fs::remove_all(m_root);
     fs::create_directories(m_root / "scenes" / "env");
     std::ofstream(m_root / "scenes" / "env" / "street.inc") << "// ok\n";

@@ -34,7 +34,10 @@ std::string read_text(const fs::path& path) {
 }
 
 fs::path scratch_dir() {
-  const fs::path dir = fs::path(testing::TempDir()) / "raintrace_simulate_test";
+  // ctest runs tests in parallel processes: each test gets its own folder (and output files).
+  const fs::path dir = fs::path(testing::TempDir()) /
+                       ("raintrace_simulate_test_" +
+                        std::string{testing::UnitTest::GetInstance()->current_test_info()->name()});
   fs::create_directories(dir);
   return dir;
 }
