@@ -17,6 +17,7 @@ packages=(
 if [[ ${1:-} == --test ]]; then
   packages+=(
     clang-14 libclang-rt-14-dev            # libFuzzer target
+    clang-format                           # the style check (.clang-format)
     chromium                               # checks the HTML compare report in a real browser
     slurmctld slurmd slurm-client munge    # one-node cluster for the Slurm backend tests
   )

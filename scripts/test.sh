@@ -20,6 +20,7 @@ step "tests"
 $quick && exit 0
 
 step "clang-format"
+command -v clang-format >/dev/null || { echo "clang-format missing (scripts/install-deps.sh --test)"; exit 1; }
 unformatted=$(cd "$root" && git ls-files '*.cpp' '*.h' | xargs -r clang-format --dry-run 2>&1 | grep -c warning || true)
 if [[ $unformatted != 0 ]]; then
   (cd "$root" && git ls-files '*.cpp' '*.h' | xargs -r clang-format --dry-run 2>&1 | grep warning | head -20)
