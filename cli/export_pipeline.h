@@ -18,8 +18,7 @@ struct ExportProgress {
 /// depends on all of them) and writes the folder layout of shared/DESIGN.md into out_dir:
 /// scene.ini, scene.inc, frames/, textures/, manifest.json. Frames whose .pov text is unchanged
 /// keep their manifest status, so a re-export does not force re-rendering.
-void export_scene(const Scene& scene, const FrameRange& range,
-                  const std::filesystem::path& out_dir,
+void export_scene(const Scene& scene, const FrameRange& range, const std::filesystem::path& out_dir,
                   const std::function<void(const ExportProgress&)>& on_progress = {});
 
 }  // namespace raintrace::cli
