@@ -71,6 +71,7 @@ TEST(LoadScene, EmptyFileGivesTheStructDefaults) {
   EXPECT_EQ(scene.look.fps, look.fps);
   EXPECT_EQ(scene.look.quality, look.quality);
   EXPECT_EQ(scene.look.sphere_distance_m, look.sphere_distance_m);
+  EXPECT_EQ(scene.look.min_streak_coverage, look.min_streak_coverage);
   EXPECT_EQ(scene.look.mask, look.mask);
   EXPECT_EQ(scene.look.fog.mode, look.fog.mode);
   EXPECT_EQ(scene.look.fog.depth_m, look.fog.depth_m);
@@ -139,6 +140,7 @@ colour = [0.1, 0.2, 0.3]
 name = "field"
 [export]
 sphere_distance_m = 2.5
+min_streak_coverage = 0.125
 mask = true
 [simulation]
 substep_s = 0.001
@@ -202,6 +204,7 @@ ground_y_m = -0.5
   EXPECT_EQ(scene.look.fog.colour, glm::dvec3(0.1, 0.2, 0.3));
   EXPECT_EQ(scene.look.environment.name, "field");
   EXPECT_EQ(scene.look.sphere_distance_m, 2.5);
+  EXPECT_EQ(scene.look.min_streak_coverage, 0.125);
   EXPECT_TRUE(scene.look.mask);
   EXPECT_EQ(scene.sim.substep_s, 0.001);
   EXPECT_EQ(scene.sim.prewarm_s, 4.0);
@@ -231,6 +234,8 @@ TEST(SceneErrors, OutOfRangeNumber) {
             "t.toml:2:9: output.width: must be in [16, 8192], got 8193");
   EXPECT_EQ(error_of("[export]\nsphere_distance_m = -1.5\n"),
             "t.toml:2:21: export.sphere_distance_m: must be in [0, 1000], got -1.5");
+  EXPECT_EQ(error_of("[export]\nmin_streak_coverage = 2\n"),
+            "t.toml:2:23: export.min_streak_coverage: must be in [0, 1], got 2");
 }
 
 TEST(SceneErrors, UnknownKeySuggestsTheClosest) {

@@ -53,6 +53,15 @@ struct ExportParams {
   /// Drops nearer than this are refractive spheres, farther ones streak quads, metres, >= 0.
   /// Default 3.
   double sphere_distance_m = 3.0;
+  /// Level of detail for far rain, as a share of one pixel, in [0, 1]. A streak's coverage is
+  /// the share of a pixel's light its drop would block: opacity × drop width / pixel width
+  /// (× length / pixel when shorter than a pixel). A streak below this coverage adds a barely
+  /// measurable tint to its pixels yet costs POV-Ray a ray hit per pixel it crosses, so it is
+  /// kept with probability coverage / min_streak_coverage (keyed by the drop's id: the same
+  /// drops stay from frame to frame) and drawn at min_streak_coverage: the expected light of
+  /// the far field is unchanged, carried by fewer, brighter streaks. 0 keeps every streak.
+  /// Default 0.5.
+  double min_streak_coverage = 0.5;
   /// Also write a rain mask scene per frame (rain white on black). Default false.
   bool mask = false;
   FogParams fog;

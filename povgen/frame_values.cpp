@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <glm/geometric.hpp>
 
 #include "povgen/drop_shape.h"
@@ -20,11 +21,23 @@ struct StreakContext {
   const StreakAtlasLayout& atlas;
   float exposure_s;
   int width_px;
+  float min_coverage;
 };
 
+/// A number in [0, 1) that depends only on the drop's id (splitmix64's finaliser): which far
+/// drops survive the level of detail is the same in every frame and for every thread count.
+float id_unit(std::uint64_t id) {
+  std::uint64_t z = id + 0x9e3779b97f4a7c15ull;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  z ^= z >> 31;
+  return static_cast<float>(z >> 40) * 0x1.0p-24f;
+}
+
 /// Builds the quad of one far drop; false when it is culled or too faint to see.
-bool make_streak(const StreakContext& ctx, const glm::vec3& position, const glm::vec3& velocity,
-                 const glm::vec3& acceleration, float diameter, float opacity, StreakValue& out) {
+bool make_streak(const StreakContext& ctx, std::uint64_t id, const glm::vec3& position,
+                 const glm::vec3& velocity, const glm::vec3& acceleration, float diameter,
+                 float opacity, StreakValue& out) {
   const float radius = 0.5f * diameter;
   const float speed = glm::length(velocity);
   // A drop at rest (or slower than 1 mm/s) still falls along -y for the quad's orientation.
@@ -51,6 +64,13 @@ bool make_streak(const StreakContext& ctx, const glm::vec3& position, const glm:
     start = middle - half;
     end = middle + half;
     length = pixel;
+  }
+  // Level of detail: a streak fainter than min_coverage survives with probability
+  // alpha / min_coverage and is drawn at min_coverage, so the far field's expected light stays
+  // the same while POV-Ray traces a fraction of the quads (each costs a ray hit per pixel).
+  if (alpha < ctx.min_coverage) {
+    if (id_unit(id) * ctx.min_coverage >= alpha) return false;
+    alpha = ctx.min_coverage;
   }
   const double ratio = drop_axis_ratio(diameter);
   out.cell = streak_atlas_cell(ctx.atlas, ratio, alpha);
@@ -89,7 +109,8 @@ void build_frame_values(const sim::Frame& frame, const ExportParams& look, Frame
   values.bolts.clear();
 
   const auto split = static_cast<float>(look.sphere_distance_m);
-  const StreakContext ctx{view, atlas, static_cast<float>(look.camera.exposure_s), look.width};
+  const StreakContext ctx{view, atlas, static_cast<float>(look.camera.exposure_s), look.width,
+                          static_cast<float>(std::clamp(look.min_streak_coverage, 0.0, 1.0))};
   const sim::Drops& drops = frame.drops;
   const std::size_t count = drops.size();
   const bool has_acceleration = drops.acceleration.size() == count;
@@ -115,7 +136,8 @@ void build_frame_values(const sim::Frame& frame, const ExportParams& look, Frame
     }
     StreakValue streak;
     const glm::vec3 acceleration = has_acceleration ? drops.acceleration[i] : glm::vec3{0.0f};
-    if (make_streak(ctx, p, drops.velocity[i], acceleration, diameter, opacity, streak)) {
+    const std::uint64_t id = i < drops.id.size() ? drops.id[i] : i;
+    if (make_streak(ctx, id, p, drops.velocity[i], acceleration, diameter, opacity, streak)) {
       values.streaks.push_back(streak);
     }
   }

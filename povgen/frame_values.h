@@ -51,7 +51,9 @@ struct FrameValues {
 /// one pixel across become spheres, all others streaks. Drops and droplets wholly outside the
 /// view are dropped;
 /// a streak narrower (or shorter) than one pixel is widened to a pixel and made fainter by the
-/// same factor, so distant rain keeps its light without antialiasing. Throws
+/// same factor, so distant rain keeps its light without antialiasing. Streaks fainter than
+/// look.min_streak_coverage are thinned out by drop id and the survivors drawn at that
+/// coverage (same expected light, fewer quads). Throws
 /// std::invalid_argument if the camera is degenerate or a value is not finite.
 FrameValues build_frame_values(const sim::Frame& frame, const ExportParams& look,
                                const StreakAtlasLayout& atlas = {});

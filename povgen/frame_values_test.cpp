@@ -2,6 +2,7 @@
 #include "povgen/frame_values.h"
 
 #include <gtest/gtest.h>
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
@@ -102,7 +103,9 @@ TEST(FrameValues, SubPixelNearDropsBecomeStreaks) {
   // 1 mm drop 2 m away at 640 px: a pixel is 2·2·tan30°/640 = 3.6 mm, the drop far smaller.
   sim::Frame frame;
   add_drop(frame, {0.0f, 1.6f, -3.0f}, {0.0f, -9.0f, 0.0f}, 1e-3f);
-  const FrameValues values = build_frame_values(frame, default_look());
+  ExportParams look = default_look();
+  look.min_streak_coverage = 0.0;  // its coverage 1/3.6 is below the default 0.5
+  const FrameValues values = build_frame_values(frame, look);
   EXPECT_TRUE(values.drops.empty());
   EXPECT_EQ(values.streaks.size(), 1u);
 }
@@ -113,7 +116,9 @@ TEST(FrameValues, StreakLengthFollowsExposureAndFacesTheCamera) {
   // wider than the drop, so the quad is one pixel wide.
   sim::Frame frame;
   add_drop(frame, {0.0f, 1.6f, 5.0f}, {0.0f, -9.0f, 0.0f}, 2e-3f);
-  const FrameValues values = build_frame_values(frame, default_look());
+  ExportParams look = default_look();
+  look.min_streak_coverage = 0.0;  // every streak, at its own opacity
+  const FrameValues values = build_frame_values(frame, look);
   ASSERT_EQ(values.streaks.size(), 1u);
   const auto& c = values.streaks[0].corners;
   const glm::vec3 along = c[3] - c[0];
@@ -135,7 +140,9 @@ TEST(FrameValues, SlantedStreaksFollowTheVelocity) {
   sim::Frame frame;
   const glm::vec3 v{3.0f, -8.0f, 0.0f};
   add_drop(frame, {1.0f, 1.6f, 3.0f}, v, 3e-3f);
-  const FrameValues values = build_frame_values(frame, default_look());
+  ExportParams look = default_look();
+  look.min_streak_coverage = 0.0;  // 3 mm over a 14 mm pixel: fainter than the default
+  const FrameValues values = build_frame_values(frame, look);
   ASSERT_EQ(values.streaks.size(), 1u);
   const auto& c = values.streaks[0].corners;
   const glm::vec3 along = glm::normalize(c[3] - c[0]);
@@ -159,7 +166,55 @@ TEST(FrameValues, FaintAndVanishedDropsAreSkipped) {
   // faintest row (7), nothing visible is lost.
   frame.drops.opacity[0] = 1.0f;
   frame.drops.diameter[0] = 5e-5f;
-  EXPECT_TRUE(build_frame_values(frame, default_look()).streaks.empty());
+  ExportParams look = default_look();
+  look.min_streak_coverage = 0.0;
+  EXPECT_TRUE(build_frame_values(frame, look).streaks.empty());
+}
+
+/// 4000 drops of 1 mm at depth 10 m, spread across the view (ids 0..3999).
+sim::Frame faint_rain() {
+  sim::Frame frame;
+  for (int i = 0; i < 4000; ++i) {
+    const float x = -2.0f + 4.0f * static_cast<float>(i % 200) / 200.0f;
+    const float y = 0.8f + 1.6f * static_cast<float>(i / 200) / 20.0f;
+    add_drop(frame, {x, y, 5.0f}, {0.0f, -9.0f, 0.0f}, 1e-3f);
+  }
+  return frame;
+}
+
+TEST(FrameValues, FaintStreaksAreThinnedButKeepTheirExpectedLight) {
+  // A pixel at depth 10 m is 18.042 mm (640 px), so a 1 mm streak covers 0.05543 of it.
+  // Under min_streak_coverage 0.25 each survives with probability 0.05543 / 0.25 = 0.2217
+  // and is drawn at 0.25 (row log2(4) = 2): 4000 · 0.2217 = 887 expected, binomial σ ≈ 26.
+  const sim::Frame frame = faint_rain();
+  ExportParams look = default_look();
+  look.min_streak_coverage = 0.25;
+  const FrameValues thinned = build_frame_values(frame, look);
+  EXPECT_NEAR(static_cast<double>(thinned.streaks.size()), 887.0, 100.0);
+  const StreakAtlasLayout atlas;
+  for (const StreakValue& s : thinned.streaks) EXPECT_EQ(s.cell / atlas.shapes, 2);
+  // 0 keeps every streak at its own opacity: row round(log2(1 / 0.05543)) = round(4.17) = 4.
+  look.min_streak_coverage = 0.0;
+  const FrameValues all = build_frame_values(frame, look);
+  ASSERT_EQ(all.streaks.size(), 4000u);
+  EXPECT_EQ(all.streaks[0].cell / atlas.shapes, 4);
+}
+
+TEST(FrameValues, ThinningKeepsTheSameDropsFromFrameToFrame) {
+  // The drops fall 5 cm between frames: coverage hardly changes, so the survivors must be the
+  // same drops (no flicker), whatever their order in the frame.
+  sim::Frame first = faint_rain();
+  sim::Frame second = faint_rain();
+  for (glm::vec3& p : second.drops.position) p.y -= 0.05f;
+  std::reverse(second.drops.id.begin(), second.drops.id.end());
+  std::reverse(second.drops.position.begin(), second.drops.position.end());
+  const FrameValues a = build_frame_values(first, default_look());
+  const FrameValues b = build_frame_values(second, default_look());
+  ASSERT_EQ(a.streaks.size(), b.streaks.size());
+  ASSERT_FALSE(a.streaks.empty());
+  // b lists the same drops in reverse: its last streak is a's first, moved down 5 cm.
+  EXPECT_NEAR(b.streaks.back().corners[0].y, a.streaks.front().corners[0].y - 0.05f, 1e-5f);
+  EXPECT_NEAR(b.streaks.back().corners[0].x, a.streaks.front().corners[0].x, 1e-5f);
 }
 
 TEST(FrameValues, LightningLightSitsAtTheTopOfTheBrightestBolt) {

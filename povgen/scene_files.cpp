@@ -27,6 +27,8 @@ void check_params(const ExportParams& look) {
   check(std::isfinite(look.fps) && look.fps > 0.0, "fps must be finite and > 0");
   check(std::isfinite(look.sphere_distance_m) && look.sphere_distance_m >= 0.0,
         "sphere_distance_m must be finite and >= 0");
+  check(look.min_streak_coverage >= 0.0 && look.min_streak_coverage <= 1.0,
+        "min_streak_coverage must be in [0, 1]");
   check(std::isfinite(look.lightning_light) && look.lightning_light >= 0.0,
         "lightning_light must be finite and >= 0");
   check(std::isfinite(look.fog.depth_m) && look.fog.depth_m > 0.0,
