@@ -6,17 +6,22 @@
 
 namespace raintrace::render {
 
+bool frame_needs_render(const povgen::FrameEntry& f, const std::filesystem::path& out_dir,
+                        bool force) {
+  std::error_code ec;
+  const bool have_image = std::filesystem::is_regular_file(out_dir / f.image, ec);
+  const bool up_to_date =
+      f.status == "rendered" && !f.input_hash.empty() && f.rendered_hash == f.input_hash;
+  return force || !up_to_date || !have_image;
+}
+
 std::vector<int> frames_needing_render(const povgen::Manifest& manifest,
                                        const std::filesystem::path& out_dir, bool force,
                                        const std::optional<FrameSpan>& only) {
   std::vector<int> frames;
   for (const auto& f : manifest.frames) {
     if (only && (f.number < only->first || f.number > only->last)) continue;
-    std::error_code ec;
-    const bool have_image = std::filesystem::is_regular_file(out_dir / f.image, ec);
-    const bool up_to_date =
-        f.status == "rendered" && !f.input_hash.empty() && f.rendered_hash == f.input_hash;
-    if (force || !up_to_date || !have_image) frames.push_back(f.number);
+    if (frame_needs_render(f, out_dir, force)) frames.push_back(f.number);
   }
   std::sort(frames.begin(), frames.end());
   frames.erase(std::unique(frames.begin(), frames.end()), frames.end());
@@ -41,6 +46,40 @@ std::vector<FrameSpan> split_into_spans(const std::vector<int>& frames, int jobs
     spans.push_back(span);
   }
   return spans;
+}
+
+int streaming_span_length(int expected_frames, int jobs, int max_span) {
+  jobs = std::max(jobs, 1);
+  return std::clamp((expected_frames + 2 * jobs - 1) / (2 * jobs), 1, std::max(max_span, 1));
+}
+
+void StreamingSpans::arrived(int number, bool needs_render) {
+  if (m_closed || number <= m_last_arrived) return;
+  m_last_arrived = number;
+  if (needs_render) m_pending.push_back(number);
+}
+
+void StreamingSpans::close(int jobs) {
+  if (m_closed) return;
+  m_closed = true;
+  const int left = static_cast<int>(m_pending.size());
+  m_length = std::clamp((left + std::max(jobs, 1) - 1) / std::max(jobs, 1), 1, m_length);
+}
+
+std::optional<FrameSpan> StreamingSpans::take_ready() {
+  if (m_pending.empty()) return std::nullopt;
+  FrameSpan span{m_pending.front(), m_pending.front()};
+  std::size_t n = 1;
+  while (n < m_pending.size() && m_pending[n] == span.last + 1 && span.count() < m_length) {
+    span.last = m_pending[n];
+    ++n;
+  }
+  // Short of `length`: ready only if the run can no longer grow (its next frame has arrived
+  // and needs no render, or nothing more arrives).
+  const bool can_grow = !m_closed && span.last == m_last_arrived;
+  if (span.count() < m_length && can_grow) return std::nullopt;
+  m_pending.erase(m_pending.begin(), m_pending.begin() + static_cast<std::ptrdiff_t>(n));
+  return span;
 }
 
 int frame_digits(const povgen::Manifest& manifest) {

@@ -2,6 +2,7 @@
 // Pure apart from checking which images exist, so the resume rules are easy to test.
 #pragma once
 
+#include <algorithm>
 #include <filesystem>
 #include <optional>
 #include <vector>
@@ -10,6 +11,11 @@
 #include "render/povray_command.h"
 
 namespace raintrace::render {
+
+/// Whether one frame's image must be (re)made: force, or status not "rendered", or
+/// rendered_hash != input_hash (or no input_hash), or the image file is missing.
+bool frame_needs_render(const povgen::FrameEntry& frame, const std::filesystem::path& out_dir,
+                        bool force);
 
 /// Frames (ascending) whose image must be (re)made: force, or status not "rendered", or
 /// rendered_hash != input_hash, or the image file is missing. Frames outside `only` are left
@@ -22,6 +28,37 @@ std::vector<int> frames_needing_render(const povgen::Manifest& manifest,
 /// (POVRAY-NOTES), so spans are long, but short enough that `jobs` processes all get work and
 /// finish together: about two spans per job, each at most max_span frames, at least 1.
 std::vector<FrameSpan> split_into_spans(const std::vector<int>& frames, int jobs, int max_span);
+
+/// Span length while frames still arrive (render_local with a FrameFeed): the length
+/// split_into_spans would pick for `expected_frames`, clamped to [1, max_span].
+int streaming_span_length(int expected_frames, int jobs, int max_span);
+
+/// Frames waiting for POV-Ray while the exporter still writes later ones, in ascending order.
+/// A span may start only once every frame in it exists, so the planner cuts spans from the
+/// front: a run of consecutive pending frames is ready when it is `length` frames long, or when
+/// it cannot grow any more (a later frame has arrived without needing a render, or nothing more
+/// will arrive).
+class StreamingSpans {
+ public:
+  explicit StreamingSpans(int length) : m_length{std::max(1, length)} {}
+  /// Frame `number` has arrived (numbers ascend); `needs_render` puts it on the pending list.
+  void arrived(int number, bool needs_render);
+  /// Nothing more will arrive. The frames still pending are then cut into at least `jobs`
+  /// spans (each at most `length`), so the processes that render the tail end together.
+  void close(int jobs);
+  /// Removes and returns the next span that is ready, if any.
+  std::optional<FrameSpan> take_ready();
+  /// True when nothing is pending and nothing more will arrive.
+  [[nodiscard]] bool exhausted() const { return m_closed && m_pending.empty(); }
+  [[nodiscard]] bool closed() const { return m_closed; }
+  [[nodiscard]] std::size_t pending() const { return m_pending.size(); }
+
+ private:
+  int m_length;
+  std::vector<int> m_pending;  // ascending
+  int m_last_arrived = 0;
+  bool m_closed = false;
+};
 
 /// Digits of the frame number in the manifest's image names ("images/frame_00001.png" → 5);
 /// 4 when there are no frames.

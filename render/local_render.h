@@ -9,18 +9,24 @@
 #include <optional>
 #include <vector>
 
+#include "render/frame_feed.h"
 #include "render/povray_runner.h"
 
 namespace raintrace::render {
 
 struct RenderProgress {
-  int total = 0;  ///< frames (and masks) to render in this run
-  int done = 0;   ///< rendered so far in this run
+  /// Frames (and masks) to render in this run. While frames are still being exported this
+  /// counts every frame not yet exported as one to render, and drops as exported frames turn
+  /// out to be up to date.
+  int total = 0;
+  int done = 0;  ///< rendered so far in this run
   int failed = 0;
   int skipped = 0;  ///< already up to date before the run
   double elapsed_seconds = 0.0;
   /// Estimated seconds left from the rate so far; negative while unknown.
   double eta_seconds = -1.0;
+  int exported = 0;      ///< frames exported so far in this run (with a FrameFeed)
+  int export_total = 0;  ///< frames this run exports; 0 when rendering an exported folder
 };
 
 struct LocalRenderSettings {
@@ -29,6 +35,10 @@ struct LocalRenderSettings {
   bool force = false;  ///< re-render frames that are up to date
   bool mask = false;   ///< also render images/mask_NNNN.png (mask.ini, from export --mask)
   std::optional<FrameSpan> only;  ///< restrict to these frames
+  /// Frames still being exported (`raintrace render SCENE.toml`): when set, the frames of the
+  /// run come only from here, each rendered as soon as it and the rest of its span exist,
+  /// while later frames are simulated. manifest.json must already hold this run's header.
+  FrameFeed* incoming = nullptr;
   const std::atomic<bool>* stop = nullptr;
   std::function<void(const RenderProgress&)> on_progress;  ///< ~10×/s and on every frame
   std::function<void(const FrameFailure&)> on_failed;
@@ -41,7 +51,9 @@ struct RenderSummary {
 };
 
 /// Throws std::runtime_error when POV-Ray is not installed (one line, with the apt command) or
-/// the folder has no readable manifest.json.
+/// the folder has no readable manifest.json. With settings.incoming, returns once the feed is
+/// closed and everything it brought is rendered, or when stopped (then after the feed closes, so
+/// manifest.json lists every frame the exporter finished).
 RenderSummary render_local(const std::filesystem::path& out_dir,
                            const LocalRenderSettings& settings);
 

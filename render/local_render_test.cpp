@@ -2,6 +2,9 @@
 #include "render/local_render.h"
 
 #include <gtest/gtest.h>
+#include <atomic>
+#include <chrono>
+#include <thread>
 
 #include "povgen/manifest.h"
 #include "render/image_check.h"
@@ -125,6 +128,120 @@ TEST_F(PovrayLocalRender, StopFlagKeepsFinishedFramesAndTheRerunCompletes) {
   for (int f = 1; f <= 8; ++f) {
     EXPECT_TRUE(image_is_complete(dir / final_image_name(Pass::image, f), 64, 36)) << f;
   }
+}
+
+// The test folder's frames handed over through a FrameFeed from another thread, the way the
+// exporter publishes them while it simulates: `first` frames at once, the rest once `release`
+// returns true (or a generous safety deadline passes, so a broken renderer fails instead of
+// hanging), then the feed closes.
+class Producer {
+ public:
+  Producer(FrameFeed& feed, std::vector<povgen::FrameEntry> entries, std::size_t first,
+           std::function<bool()> release)
+      : m_thread{[&feed, entries = std::move(entries), first, release = std::move(release), this] {
+          for (std::size_t i = 0; i < first && i < entries.size(); ++i) feed.publish(entries[i]);
+          const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+          while (!release() && std::chrono::steady_clock::now() < deadline) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+          }
+          m_released_by_renderer = release();
+          for (std::size_t i = first; i < entries.size(); ++i) feed.publish(entries[i]);
+          feed.close();
+        }} {}
+  ~Producer() { join(); }
+  Producer(const Producer&) = delete;
+  Producer& operator=(const Producer&) = delete;
+  void join() {
+    if (m_thread.joinable()) m_thread.join();
+  }
+  /// True when release() said yes before the rest of the frames were published.
+  bool released_by_renderer() const { return m_released_by_renderer; }
+
+ private:
+  std::atomic<bool> m_released_by_renderer{false};
+  std::thread m_thread;
+};
+
+TEST_F(PovrayLocalRender, FedFramesRenderBeforeTheLastFrameIsPublished) {
+  const auto dir = testing::fresh_test_dir("feed");
+  testing::write_test_folder(dir, {.frames = 6});
+  const auto entries = povgen::read_manifest(dir / "manifest.json").frames;
+  FrameFeed feed{6, 4};
+  std::atomic<int> done{0};
+  // Frames 4-6 are held back until a frame has rendered: a renderer that waited for the whole
+  // export would never get there.
+  Producer producer{feed, entries, 3, [&] { return done.load() > 0; }};
+  auto fed = settings(2);  // 6 frames, 2 jobs: spans of ceil(6 / 4) = 2, so 1-2 can start
+  fed.incoming = &feed;
+  fed.on_progress = [&](const RenderProgress& p) { done = p.done; };
+  const auto summary = render_local(dir, fed);
+  producer.join();
+  EXPECT_TRUE(producer.released_by_renderer());
+  EXPECT_FALSE(summary.interrupted);
+  EXPECT_TRUE(summary.failures.empty());
+  EXPECT_EQ(summary.progress.done, 6);
+  EXPECT_EQ(summary.progress.total, 6);
+  EXPECT_EQ(summary.progress.exported, 6);
+  EXPECT_EQ(summary.progress.export_total, 6);
+  const auto manifest = povgen::read_manifest(dir / "manifest.json");
+  ASSERT_EQ(manifest.frames.size(), 6U);
+  for (const auto& f : manifest.frames) {
+    EXPECT_TRUE(image_is_complete(dir / f.image, 64, 36)) << f.image;
+    EXPECT_EQ(f.status, "rendered");
+    EXPECT_EQ(f.rendered_hash, f.input_hash);
+  }
+  EXPECT_TRUE(std::filesystem::is_empty(dir / "images/.tmp"));
+}
+
+TEST_F(PovrayLocalRender, FedFramesThatAreUpToDateAreSkippedAndMasksFollow) {
+  const auto dir = testing::fresh_test_dir("feed_skip");
+  testing::write_test_folder(dir, {.frames = 4});
+  ASSERT_EQ(render_local(dir, settings(2)).progress.done, 4);
+  testing::replace_frame(dir, 3, "#include \"scene.inc\"\nsphere { 0, 1 pigment { rgb 1 } }\n");
+  FrameFeed feed{4, 4};
+  Producer producer{feed, povgen::read_manifest(dir / "manifest.json").frames, 4,
+                    [] { return true; }};
+  auto fed = settings(2);
+  fed.incoming = &feed;
+  fed.mask = true;
+  int most_total = 0;
+  fed.on_progress = [&](const RenderProgress& p) { most_total = std::max(most_total, p.total); };
+  const auto summary = render_local(dir, fed);
+  // Frame 3 changed: its image and mask; the other three only need their missing masks.
+  EXPECT_EQ(summary.progress.done, 5);
+  EXPECT_EQ(summary.progress.total, 5);
+  EXPECT_EQ(summary.progress.skipped, 3);
+  EXPECT_LE(most_total, 8);  // never more than 4 frames × (image + mask)
+  for (int f = 1; f <= 4; ++f) {
+    EXPECT_TRUE(image_is_complete(dir / final_image_name(Pass::mask, f), 64, 36)) << f;
+  }
+}
+
+TEST_F(PovrayLocalRender, StopWhileFedStillRecordsEveryPublishedFrameInTheManifest) {
+  const auto dir = testing::fresh_test_dir("feed_stop");
+  testing::write_test_folder(dir, {.frames = 4});
+  auto entries = povgen::read_manifest(dir / "manifest.json").frames;
+  // Frames 3 and 4 arrive only after the stop, as from an exporter finishing its current frame.
+  entries[2].input_hash = "after-stop-3";
+  entries[3].input_hash = "after-stop-4";
+  FrameFeed feed{4, 4};
+  std::atomic<bool> stop{false};
+  Producer producer{feed, entries, 2, [&] { return stop.load(); }};
+  auto fed = settings(1, 2);
+  fed.incoming = &feed;
+  fed.stop = &stop;
+  fed.on_progress = [&](const RenderProgress& p) {
+    if (p.done >= 1) stop = true;
+  };
+  const auto summary = render_local(dir, fed);
+  EXPECT_TRUE(summary.interrupted);
+  EXPECT_TRUE(summary.failures.empty());
+  const auto manifest = povgen::read_manifest(dir / "manifest.json");
+  ASSERT_EQ(manifest.frames.size(), 4U);
+  EXPECT_EQ(manifest.frames[0].status, "rendered");
+  EXPECT_EQ(manifest.frames[2].input_hash, "after-stop-3");
+  EXPECT_EQ(manifest.frames[3].input_hash, "after-stop-4");
+  EXPECT_NE(manifest.frames[3].status, "rendered");
 }
 
 }  // namespace

@@ -38,17 +38,34 @@ double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
+// A fixed list of jobs, all ready from the start.
+class QueueSource : public JobSource {
+ public:
+  explicit QueueSource(std::deque<RenderJob> jobs) : m_jobs{std::move(jobs)} {}
+  std::optional<RenderJob> next() override {
+    if (m_jobs.empty()) return std::nullopt;
+    RenderJob job = m_jobs.front();
+    m_jobs.pop_front();
+    return job;
+  }
+  [[nodiscard]] bool exhausted() const override { return m_jobs.empty(); }
+
+ private:
+  std::deque<RenderJob> m_jobs;
+};
+
 class Runner {
  public:
   Runner(const std::filesystem::path& out_dir, const RunnerSettings& settings,
          const RunnerCallbacks& callbacks)
       : m_out{out_dir}, m_settings{settings}, m_callbacks{callbacks} {}
 
-  bool run(std::deque<RenderJob> queue) {
+  bool run(JobSource& source) {
     std::filesystem::create_directories(m_out / "logs");
     prepare_povray_home(m_out);
     std::vector<Running> running;
-    while (!queue.empty() || !running.empty()) {
+    std::deque<RenderJob> retries;  // the rest of failed spans, ahead of new work
+    while (!retries.empty() || !running.empty() || !source.exhausted()) {
       if (stop_requested()) {
         for (auto& r : running) {
           r.process->stop();
@@ -56,15 +73,22 @@ class Runner {
         }
         return false;
       }
-      while (static_cast<int>(running.size()) < std::max(1, m_settings.jobs) && !queue.empty()) {
-        running.push_back(start(queue.front()));
-        queue.pop_front();
+      while (static_cast<int>(running.size()) < std::max(1, m_settings.jobs)) {
+        std::optional<RenderJob> job;
+        if (!retries.empty()) {
+          job = retries.front();
+          retries.pop_front();
+        } else {
+          job = source.next();
+        }
+        if (!job) break;
+        running.push_back(start(*job));
       }
       bool any_ended = false;
       for (auto it = running.begin(); it != running.end();) {
         promote_ready(*it);
         if (const auto code = it->process->poll()) {
-          finish(*it, *code, queue);
+          finish(*it, *code, retries);
           it = running.erase(it);
           any_ended = true;
         } else {
@@ -163,7 +187,13 @@ std::string FrameFailure::summary() const {
 
 bool run_povray_jobs(const std::filesystem::path& out_dir, std::deque<RenderJob> jobs,
                      const RunnerSettings& settings, const RunnerCallbacks& callbacks) {
-  return Runner{out_dir, settings, callbacks}.run(std::move(jobs));
+  QueueSource source{std::move(jobs)};
+  return Runner{out_dir, settings, callbacks}.run(source);
+}
+
+bool run_povray_jobs(const std::filesystem::path& out_dir, JobSource& source,
+                     const RunnerSettings& settings, const RunnerCallbacks& callbacks) {
+  return Runner{out_dir, settings, callbacks}.run(source);
 }
 
 }  // namespace raintrace::render

@@ -7,6 +7,7 @@
 #include <deque>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,10 +49,25 @@ struct RunnerSettings {
   const std::atomic<bool>* stop = nullptr;
 };
 
+/// Where the runner gets work when it streams (the local backend while frames are exported).
+class JobSource {
+ public:
+  virtual ~JobSource() = default;
+  /// The next job that can start now, or nullopt when none is ready yet. Asked whenever a
+  /// process slot is free, about every 50 ms.
+  virtual std::optional<RenderJob> next() = 0;
+  /// True once next() will never return a job again.
+  [[nodiscard]] virtual bool exhausted() const = 0;
+};
+
 /// Renders every job; returns false when stopped by settings.stop (finished frames are promoted
 /// and reported first). A span whose process fails at frame f reports f and goes on with
 /// f+1..last in a new process. Logs go to out_dir/logs/<pass>_AAAA-BBBB.log.
 bool run_povray_jobs(const std::filesystem::path& out_dir, std::deque<RenderJob> jobs,
+                     const RunnerSettings& settings, const RunnerCallbacks& callbacks);
+/// The same, with jobs taken from `source` as they become ready, until it is exhausted and
+/// every process has ended. The rest of a failed span is retried before new jobs.
+bool run_povray_jobs(const std::filesystem::path& out_dir, JobSource& source,
                      const RunnerSettings& settings, const RunnerCallbacks& callbacks);
 
 }  // namespace raintrace::render

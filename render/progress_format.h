@@ -9,10 +9,12 @@
 namespace raintrace::render {
 
 /// "[##########----------]  12/48 frames  1 failed  00:12 elapsed  ETA 00:36", bar_width
-/// characters of bar; "ETA --:--" while unknown.
+/// characters of bar; "ETA --:--" while unknown. While the same run exports frames,
+/// "30/48 exported" follows the frame count.
 std::string format_progress_bar(const RenderProgress& progress, int bar_width = 30);
 
-/// "render: 12/48 frames done, 1 failed, 12.3 s elapsed, ETA 36 s"
+/// "render: 12/48 frames done, 1 failed, 12.3 s elapsed, ETA 36 s"; while the same run
+/// exports frames "render: 12/48 frames done, 30/48 exported, 1 failed, …".
 std::string format_progress_line(const RenderProgress& progress);
 
 /// Seconds as "MM:SS", or "H:MM:SS" from one hour on.
