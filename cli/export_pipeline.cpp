@@ -46,6 +46,13 @@ std::map<int, povgen::FrameEntry> previous_frames(const std::filesystem::path& p
 
 void export_scene(const Scene& scene, const FrameRange& range, const std::filesystem::path& out_dir,
                   const std::function<void(const ExportProgress&)>& on_progress) {
+  ExportHooks hooks;
+  hooks.on_progress = on_progress;
+  export_scene(scene, range, out_dir, hooks);
+}
+
+void export_scene(const Scene& scene, const FrameRange& range, const std::filesystem::path& out_dir,
+                  const ExportHooks& hooks) {
   if (range.first < 1 || range.last < range.first || range.last > scene.frames) {
     throw std::invalid_argument("export: frame range " + std::to_string(range.first) + "-" +
                                 std::to_string(range.last) + " is outside 1-" +
@@ -63,12 +70,31 @@ void export_scene(const Scene& scene, const FrameRange& range, const std::filesy
     it = it->first > scene.frames || it->first < 1 ? entries.erase(it) : std::next(it);
   }
 
+  povgen::Manifest manifest;
+  manifest.raintrace_version = RAINTRACE_VERSION;
+  manifest.scene_hash = povgen::content_hash(scene.text);
+  manifest.seed = scene.sim.seed;
+  manifest.width = look.width;
+  manifest.height = look.height;
+  manifest.fps = look.fps;
+  manifest.quality = quality_name(look.quality);
+  // Before any frame file is replaced: the frames about to be rewritten lose their input_hash,
+  // so if this run is killed halfway no entry vouches for a file it no longer describes (a
+  // frame without input_hash is never up to date). Their render state stays for the next run.
+  for (const auto& [number, entry] : entries) {
+    manifest.frames.push_back(entry);
+    if (number >= range.first && number <= range.last) manifest.frames.back().input_hash.clear();
+  }
+  povgen::write_manifest(manifest_path, manifest);
+  if (hooks.on_shared_files) hooks.on_shared_files();
+  auto stopped = [&] { return hooks.stop != nullptr && hooks.stop->load(); };
+
   const int digits = povgen::frame_digits(scene.frames);
   const int threads = writer_threads(scene.sim.threads);
   const ExportProgress total{0, range.last - range.first + 1};
   povgen::FrameValues values;  // reused: its memory stays mapped from frame to frame
   sim::World world(scene.sim);
-  for (int n = 1; n <= range.last; ++n) {
+  for (int n = 1; n <= range.last && !stopped(); ++n) {
     // Frame n shows the world at (n − 1)/fps: the state depends on every earlier frame, so
     // frames before the range are simulated but not written.
     world.advance_to((n - 1) / look.fps);
@@ -90,22 +116,23 @@ void export_scene(const Scene& scene, const FrameRange& range, const std::filesy
           povgen::mask_text("frames/" + name));
     }
     const auto old = entries.find(n);
-    if (old != entries.end() && old->second.input_hash == entry.input_hash) {
-      entry = old->second;  // unchanged inputs: keep "rendered" and its timings
+    if (old != entries.end() &&
+        (old->second.input_hash == entry.input_hash ||
+         (old->second.status == "rendered" && old->second.rendered_hash == entry.input_hash))) {
+      // Unchanged inputs (also after an interrupted run cleared input_hash): keep "rendered"
+      // and its timings.
+      const std::string hash = entry.input_hash;
+      entry = old->second;
+      entry.input_hash = hash;
       entry.scene = "frames/" + name;
     }
     entries[n] = entry;
-    if (on_progress) on_progress({n - range.first + 1, total.frames_total});
+    if (hooks.on_frame) hooks.on_frame(entry);
+    if (hooks.on_progress) hooks.on_progress({n - range.first + 1, total.frames_total});
   }
+  if (hooks.on_frame) return;  // the receiver owns manifest.json now
 
-  povgen::Manifest manifest;
-  manifest.raintrace_version = RAINTRACE_VERSION;
-  manifest.scene_hash = povgen::content_hash(scene.text);
-  manifest.seed = scene.sim.seed;
-  manifest.width = look.width;
-  manifest.height = look.height;
-  manifest.fps = look.fps;
-  manifest.quality = quality_name(look.quality);
+  manifest.frames.clear();
   for (auto& [number, entry] : entries) manifest.frames.push_back(std::move(entry));
   povgen::write_manifest(manifest_path, manifest);
 }

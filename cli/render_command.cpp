@@ -1,6 +1,8 @@
-// `raintrace render SCENE.toml -o OUT`: simulate + export (cli/export_pipeline.h), then ray-trace
-// every frame with POV-Ray (locally or as a Slurm job array), then make the MP4, GIF and contact
-// sheet. Re-running resumes: finished frames whose inputs are unchanged are never redone.
+// `raintrace render SCENE.toml -o OUT`: simulate + export (cli/export_pipeline.h) and ray-trace
+// every frame with POV-Ray, then make the MP4, GIF and contact sheet. Locally the two overlap:
+// the exporter runs on its own thread and POV-Ray starts on each range of frames as soon as the
+// range is exported. Slurm exports everything first, then submits one job array. Re-running
+// resumes: finished frames whose inputs are unchanged are never redone.
 //
 // Options (each with an example in --help):
 //   --frames A-B   --jobs N   --width W --height H   --quality preview|final   --mask   --force
@@ -12,18 +14,23 @@
 #include <atomic>
 #include <csignal>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
+#include <future>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "cli/command.h"
 #include "cli/exit_codes.h"
 #include "cli/export_pipeline.h"
 #include "cli/scene.h"
+#include "povgen/frame_text.h"
 #include "povgen/manifest.h"
 #include "render/contact_sheet.h"
+#include "render/frame_feed.h"
 #include "render/frame_plan.h"
 #include "render/local_render.h"
 #include "render/movie.h"
@@ -108,6 +115,12 @@ class ProgressPrinter {
   ProgressPrinter() : m_tty(::isatty(STDERR_FILENO) == 1) {}
 
   void update(const render::RenderProgress& p) {
+    if (p.export_total > 0 && p.exported == p.export_total && !m_export_reported) {
+      m_export_reported = true;
+      break_line();
+      fmt::print(stderr, "export: all {} frames written after {:.1f} s\n", p.export_total,
+                 p.elapsed_seconds);
+    }
     const int finished = p.done + p.failed;
     if (m_tty) {
       const double now = p.elapsed_seconds;
@@ -135,8 +148,65 @@ class ProgressPrinter {
  private:
   bool m_tty;
   bool m_drawn = false;
+  bool m_export_reported = false;
   int m_last_finished = -1;
   double m_last_draw = -1e9;
+};
+
+// Runs the export on its own thread and hands each frame to the renderer through `feed`. The
+// stop flag ends it between frames; an export error sets the flag too (so POV-Ray stops) and is
+// rethrown by finish(). The destructor stops and joins, so no path leaves the thread running.
+class ExportThread {
+ public:
+  ExportThread(const Scene& scene, const FrameRange& range, const std::filesystem::path& out,
+               render::FrameFeed& feed, std::atomic<bool>& stop)
+      : m_stop{stop} {
+    auto shared_files = m_shared_files.get_future();
+    m_thread = std::thread([this, &scene, range, out, &feed] {
+      bool announced = false;
+      try {
+        ExportHooks hooks;
+        hooks.stop = &m_stop;
+        hooks.on_shared_files = [&] {
+          announced = true;
+          m_shared_files.set_value();
+        };
+        hooks.on_frame = [&](povgen::FrameEntry entry) { feed.publish(std::move(entry)); };
+        export_scene(scene, range, out, hooks);
+      } catch (...) {
+        m_error = std::current_exception();
+        m_stop.store(true);
+        if (!announced) m_shared_files.set_exception(m_error);
+      }
+      feed.close();
+    });
+    try {
+      shared_files.get();  // manifest.json and scene.ini exist: the renderer may start
+    } catch (...) {
+      m_thread.join();
+      throw;
+    }
+  }
+  ~ExportThread() {
+    if (m_thread.joinable()) {
+      m_stop.store(true);
+      m_thread.join();
+    }
+  }
+  ExportThread(const ExportThread&) = delete;
+  ExportThread& operator=(const ExportThread&) = delete;
+
+  /// Waits for the export to end; rethrows its error, if any.
+  void finish() {
+    if (m_thread.joinable()) m_thread.join();
+    if (m_error) std::rethrow_exception(m_error);
+  }
+
+ private:
+  std::atomic<bool>& m_stop;
+  std::promise<void> m_shared_files;
+  std::exception_ptr m_error;
+  std::thread m_thread;
 };
 
 void print_failure(const render::FrameFailure& f, const std::filesystem::path& out) {
@@ -164,6 +234,8 @@ int run_render(const RenderArgs& args) {
   // SCENE.toml → export into OUT; an exported folder (manifest.json inside) → render it as is.
   std::filesystem::path out;
   std::optional<render::FrameSpan> only;
+  std::optional<Scene> overlapped;  // local backend, scene file: exported while rendering
+  FrameRange range;
   const std::filesystem::path input{args.scene};
   if (std::filesystem::is_directory(input) && std::filesystem::exists(input / "manifest.json")) {
     if (!args.out.empty() &&
@@ -178,8 +250,8 @@ int run_render(const RenderArgs& args) {
     out = input;
     if (!args.frames.empty()) {
       const auto manifest = povgen::read_manifest(out / "manifest.json");
-      const auto range = parse_frame_range(args.frames, static_cast<int>(manifest.frames.size()));
-      only = render::FrameSpan{range.first, range.last};
+      const auto frames = parse_frame_range(args.frames, static_cast<int>(manifest.frames.size()));
+      only = render::FrameSpan{frames.first, frames.last};
     }
   } else {
     if (args.out.empty()) throw std::invalid_argument("-o OUT is required with a scene file");
@@ -192,11 +264,16 @@ int run_render(const RenderArgs& args) {
           args.quality == "final" ? povgen::Quality::final : povgen::Quality::preview;
     }
     if (args.mask) scene.look.mask = true;
-    const FrameRange range = parse_frame_range(args.frames, scene.frames);
+    range = parse_frame_range(args.frames, scene.frames);
     only = render::FrameSpan{range.first, range.last};
-    fmt::print(stderr, "export: simulating and writing frames {}-{} to {}\n", range.first,
-               range.last, out.string());
-    export_scene(scene, range, out);
+    fmt::print(stderr, "export: simulating and writing frames {}-{} to {}{}\n", range.first,
+               range.last, out.string(),
+               args.backend == "local" ? " (POV-Ray starts as they are written)" : "");
+    if (args.backend == "local") {
+      overlapped = std::move(scene);
+    } else {
+      export_scene(scene, range, out);  // the cluster gets a complete folder
+    }
   }
 
   ProgressPrinter printer;
@@ -217,7 +294,17 @@ int run_render(const RenderArgs& args) {
       settings.stop = &g_stop;
       settings.on_progress = on_progress;
       settings.on_failed = on_failed;
-      summary = render::render_local(out, settings);
+      if (overlapped) {
+        render::FrameFeed feed{range.last - range.first + 1,
+                               povgen::frame_digits(overlapped->frames)};
+        ExportThread exporter{*overlapped, range, out, feed, g_stop};
+        settings.incoming = &feed;
+        summary = render::render_local(out, settings);
+        printer.break_line();
+        exporter.finish();
+      } else {
+        summary = render::render_local(out, settings);
+      }
     } else {
       render::SlurmRenderSettings settings;
       settings.tasks = args.tasks;

@@ -1,5 +1,6 @@
 // `raintrace render` end to end, as a user runs it: exit codes, progress lines when stderr is
 // not a terminal, failure reports, SIGINT and SIGKILL in the middle of a render.
+#include <fmt/core.h>
 #include <gtest/gtest.h>
 #include <chrono>
 #include <csignal>
@@ -182,6 +183,119 @@ TEST_F(PovrayRenderCli, SigintStopsPovrayKeepsFramesAndSaysHowToResume) {
   EXPECT_NE(out.find("interrupted by SIGINT"), std::string::npos) << out;
   EXPECT_NE(out.find("run the same command again to resume"), std::string::npos);
   EXPECT_GE(rendered_in_manifest(dir / "out"), 2);
+}
+
+// A small rain scene (about 1 000 drops in view at 64x36) for runs that export and render.
+std::filesystem::path write_scene(const std::filesystem::path& dir, int frames) {
+  std::filesystem::create_directories(dir);
+  const auto path = dir / "small.toml";
+  std::ofstream{path} << "seed = 7\n[output]\nframes = " << frames
+                      << "\nfps = 24\nwidth = 64\nheight = 36\nquality = \"preview\"\n"
+                         "[camera]\nposition = [0, 1.6, -5]\nlook_at = [0, 1.3, 0]\n"
+                         "fov_deg = 60\nexposure_s = 0.02\n"
+                         "[rain]\nrate_mm_per_h = 5\nnear_m = 0.3\nfar_m = 2.5\n"
+                         "[wind]\nvelocity_m_per_s = [0.8, 0, 0]\n"
+                         "[environment]\nname = \"night_street\"\n";
+  return path;
+}
+
+std::string frame_file(const std::filesystem::path& out, int frame) {
+  return read_all(out / fmt::format("frames/frame_{:04d}.pov", frame));
+}
+
+TEST_F(PovrayRenderCli, SceneFileIsExportedWhileRenderingIntoTheSameFilesAsAPlainExport) {
+  const auto dir = testing::fresh_test_dir("cli_overlap");
+  const auto scene = write_scene(dir, 6);
+  const auto r = run_raintrace(
+      {"render", scene.string(), "-o", (dir / "a").string(), "--jobs", "3", "--no-movie"},
+      dir / "log_a");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("exported, 0 failed"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("export: all 6 frames written"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("6 frames rendered, 0 up to date, 0 failed"), std::string::npos);
+  const auto one_job = run_raintrace(
+      {"render", scene.string(), "-o", (dir / "b").string(), "--jobs", "1", "--no-movie"},
+      dir / "log_b");
+  EXPECT_EQ(one_job.exit_code, 0) << one_job.output;
+  const auto plain =
+      run_raintrace({"export", scene.string(), "-o", (dir / "c").string()}, dir / "log_c");
+  ASSERT_EQ(plain.exit_code, 0) << plain.output;
+  // Byte-identical frames whatever the overlap and the number of POV-Ray processes.
+  for (int f = 1; f <= 6; ++f) {
+    const std::string expected = frame_file(dir / "c", f);
+    EXPECT_FALSE(expected.empty());
+    EXPECT_EQ(frame_file(dir / "a", f), expected) << "frame " << f;
+    EXPECT_EQ(frame_file(dir / "b", f), expected) << "frame " << f;
+    EXPECT_TRUE(image_is_complete(dir / "a" / final_image_name(Pass::image, f), 64, 36)) << f;
+  }
+  EXPECT_EQ(read_all(dir / "a/scene.inc"), read_all(dir / "c/scene.inc"));
+  const auto manifest = povgen::read_manifest(dir / "a/manifest.json");
+  const auto exported = povgen::read_manifest(dir / "c/manifest.json");
+  ASSERT_EQ(manifest.frames.size(), 6U);
+  ASSERT_EQ(exported.frames.size(), 6U);
+  for (std::size_t i = 0; i < 6; ++i) {
+    EXPECT_EQ(manifest.frames[i].status, "rendered");
+    EXPECT_EQ(manifest.frames[i].input_hash, exported.frames[i].input_hash);
+    EXPECT_EQ(manifest.frames[i].rendered_hash, exported.frames[i].input_hash);
+  }
+  // The same command again: everything is up to date, nothing is ray-traced.
+  const auto again = run_raintrace(
+      {"render", scene.string(), "-o", (dir / "a").string(), "--no-movie"}, dir / "log_a2");
+  EXPECT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_NE(again.output.find("0 frames rendered, 6 up to date, 0 failed"), std::string::npos)
+      << again.output;
+}
+
+TEST_F(PovrayRenderCli, SigkillWhileExportingAndRenderingThenRerunRedoesOnlyUnfinishedFrames) {
+  const auto dir = testing::fresh_test_dir("cli_kill_scene");
+  const int frames = 16;
+  const auto scene = write_scene(dir, frames);
+  const auto plain =
+      run_raintrace({"export", scene.string(), "-o", (dir / "plain").string()}, dir / "log_plain");
+  ASSERT_EQ(plain.exit_code, 0) << plain.output;
+  const std::vector<std::string> args{
+      "render", scene.string(), "-o", (dir / "out").string(), "--jobs", "1", "--no-movie"};
+  ChildProcess child{raintrace_spec(args, dir / "log")};
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (rendered_in_manifest(dir / "out") < 2 && std::chrono::steady_clock::now() < deadline &&
+         !child.poll()) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  ASSERT_FALSE(child.poll().has_value()) << read_all(dir / "log");
+  ::kill(child.pid(), SIGKILL);
+  EXPECT_EQ(child.wait(), 128 + SIGKILL);
+
+  // Every frame file at its final name is complete (byte-identical to a plain export's).
+  for (int f = 1; f <= frames; ++f) {
+    if (std::filesystem::exists(dir / "out" / fmt::format("frames/frame_{:04d}.pov", f))) {
+      EXPECT_EQ(frame_file(dir / "out", f), frame_file(dir / "plain", f)) << "frame " << f;
+    }
+  }
+  std::map<int, std::filesystem::file_time_type> finished;
+  for (const auto& f : povgen::read_manifest(dir / "out/manifest.json").frames) {
+    if (f.status != "rendered") continue;
+    finished[f.number] = std::filesystem::last_write_time(dir / "out" / f.image);
+    EXPECT_TRUE(image_is_complete(dir / "out" / f.image, 64, 36));
+  }
+  ASSERT_GE(finished.size(), 2U);
+  ASSERT_LT(finished.size(), static_cast<std::size_t>(frames));
+
+  const auto r = run_raintrace(args, dir / "log2");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  const int redo = frames - static_cast<int>(finished.size());
+  EXPECT_NE(r.output.find(std::to_string(redo) + " frames rendered, " +
+                          std::to_string(finished.size()) + " up to date"),
+            std::string::npos)
+      << r.output;
+  for (const auto& [frame, mtime] : finished) {
+    EXPECT_EQ(std::filesystem::last_write_time(dir / "out" / final_image_name(Pass::image, frame)),
+              mtime)
+        << "frame " << frame << " was rendered again";
+  }
+  for (int f = 1; f <= frames; ++f) {
+    EXPECT_EQ(frame_file(dir / "out", f), frame_file(dir / "plain", f)) << "frame " << f;
+    EXPECT_TRUE(image_is_complete(dir / "out" / final_image_name(Pass::image, f), 64, 36)) << f;
+  }
 }
 
 }  // namespace
