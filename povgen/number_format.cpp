@@ -1,9 +1,12 @@
 // Fast 7-significant-digit formatting. The common case (|v| in [1e-3, 1e7), which covers every
-// coordinate and radius raintrace writes) is rounded to an integer with the right number of
-// decimals and written with a two-digit table; everything else goes through std::to_chars.
+// coordinate and radius raintrace writes) is rounded to an integer of at most 8 digits, written
+// as 8 zero-padded digits with a two-digit table, and the point goes in between; everything
+// else goes through std::to_chars. Text is written a word at a time and trimmed afterwards, so
+// the hot path has no division loops and few data-dependent branches.
 #include "povgen/number_format.h"
 
 #include <array>
+#include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -13,89 +16,98 @@
 namespace raintrace::povgen {
 namespace {
 
+// Leading and trailing zeros are counted on the digits loaded as one little-endian word.
+static_assert(std::endian::native == std::endian::little, "digit scans assume little-endian");
+
 constexpr std::array<double, 10> kPow10{1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9};
-constexpr std::array<std::uint64_t, 10> kPow10Int{1,      10,      100,      1000,      10000,
-                                                  100000, 1000000, 10000000, 100000000, 1000000000};
 
-constexpr char kDigitPairs[] =
-    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
-    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
-    "8081828384858687888990919293949596979899";
+/// "00000000": added to eight digit values 0..9, one per byte, it makes them text.
+constexpr std::uint64_t kZeroChars = 0x3030303030303030ULL;
+constexpr std::uint32_t kEightDigits = 100'000'000;
 
-/// Writes exactly `width` digits of value (zero-padded on the left).
-void write_padded(char* out, std::uint64_t value, int width) {
-  char* p = out + width;
-  while (value >= 100) {
-    const auto pair = static_cast<unsigned>(value % 100) * 2;
-    value /= 100;
-    p -= 2;
-    std::memcpy(p, kDigitPairs + pair, 2);
-  }
-  if (value >= 10) {
-    p -= 2;
-    std::memcpy(p, kDigitPairs + static_cast<unsigned>(value) * 2, 2);
-  } else if (p > out || value > 0) {
-    *--p = static_cast<char>('0' + value);
-  }
-  while (p > out) *--p = '0';
+/// The 8 decimal digits of value (< 10^8), zero-padded, one digit value (not yet a character)
+/// per byte, most significant digit in the lowest byte, so that storing the word writes them
+/// in reading order. SIMD within a register: both halves, then all four pairs, are split at
+/// once with multiply-shift divisions, with no table and no loop. A zero digit is a zero byte,
+/// so leading and trailing zeros are counted with countr_zero / countl_zero.
+std::uint64_t eight_digits(std::uint32_t value) {
+  // Two 32-bit lanes of 4 digits: x/100 == (x * 10486) >> 20 for x < 43699.
+  const std::uint64_t quads = (value / 10000) | (static_cast<std::uint64_t>(value % 10000) << 32);
+  const std::uint64_t hundreds = ((quads * 10486) >> 20) & 0x0000007F0000007FULL;
+  // Four 16-bit lanes of 2 digits: x/10 == (x * 103) >> 10 for x < 179.
+  const std::uint64_t pairs = hundreds | ((quads - hundreds * 100) << 16);
+  const std::uint64_t tens = ((pairs * 103) >> 10) & 0x000F000F000F000FULL;
+  return tens | ((pairs - tens * 10) << 8);
 }
 
-int digit_count(std::uint64_t value) {
-  int n = 1;
-  while (value >= 10) {
-    value /= 10;
-    ++n;
+/// Stores the 8 bytes of word at out: one store, whatever part of it ends up being used.
+void store_8(char* out, std::uint64_t word) { std::memcpy(out, &word, 8); }
+
+/// Decimals that give 7 significant digits for magnitude in [1e-3, 1e7): 9 at 1e-3, one fewer
+/// per power of ten, 0 from 1e6 on. Comparisons instead of a loop: no branch to mispredict.
+int decimals_for(double magnitude) {
+  return 9 - (magnitude >= 1e-2) - (magnitude >= 1e-1) - (magnitude >= 1e0) - (magnitude >= 1e1) -
+         (magnitude >= 1e2) - (magnitude >= 1e3) - (magnitude >= 1e4) - (magnitude >= 1e5) -
+         (magnitude >= 1e6);
+}
+
+/// write_number() for magnitude in [1e-3, 1e7).
+char* write_fixed(char* out, double value, double magnitude) {
+  const int decimals = decimals_for(magnitude);
+  // Round half away from zero, as llround, without the libm call (magnitude > 0 here). At most
+  // 10^7 (9999999.5 rounds up), so 8 digits always hold it.
+  const auto scaled =
+      static_cast<std::uint32_t>(magnitude * kPow10[static_cast<std::size_t>(decimals)] + 0.5);
+  if (scaled == 0) {
+    *out = '0';
+    return out + 1;
   }
-  return n;
+  const std::uint64_t digits = eight_digits(scaled);  // non-zero: scaled > 0
+  const int leading_zeros = std::countr_zero(digits) / 8;
+  const int trailing_zeros = std::countl_zero(digits) / 8;
+  const std::uint64_t text = digits + kZeroChars;
+  // Trailing zeros of the fraction are dropped, as the shortest form of the same value.
+  const int fraction_length = std::max(decimals - trailing_zeros, 0);
+
+  *out = '-';
+  out += value < 0;
+  std::uint64_t fraction = text;
+  if (decimals >= 8) {
+    // Below 0.1 all 8 digits are decimals, below 0.01 after one more zero.
+    *out++ = '0';
+    if (decimals == 9) fraction = (fraction << 8) | '0';
+  } else {
+    // Integer digits are those left of the last `decimals`; keep at least one.
+    const int integer_begin = std::min(leading_zeros, 7 - decimals);
+    store_8(out, text >> (8 * integer_begin));
+    out += 8 - decimals - integer_begin;
+    fraction = text >> (8 * (8 - decimals));
+  }
+  if (fraction_length > 0) {
+    *out++ = '.';
+    store_8(out, fraction);
+    if (decimals == 9) out[8] = static_cast<char>(text >> 56);
+    out += fraction_length;
+  }
+  return out;
 }
 
 }  // namespace
 
 char* write_index(char* out, std::uint64_t value) {
-  const int n = digit_count(value);
-  write_padded(out, value, n);
-  return out + n;
+  if (value >= kEightDigits) return std::to_chars(out, out + max_number_chars, value).ptr;
+  const std::uint64_t digits = eight_digits(static_cast<std::uint32_t>(value));
+  const int leading_zeros = digits == 0 ? 7 : std::countr_zero(digits) / 8;  // "0" keeps a digit
+  store_8(out, (digits + kZeroChars) >> (8 * leading_zeros));
+  return out + 8 - leading_zeros;
 }
 
 char* write_number(char* out, double value) {
   if (!std::isfinite(value)) {
     throw std::invalid_argument("cannot write a non-finite number (NaN or infinity) to POV-Ray");
   }
-  double magnitude = std::fabs(value);
-  if (magnitude >= 1e-3 && magnitude < 1e7) {
-    // Integer digits before the point decide how many decimals give 7 significant digits.
-    int decimals = 6;
-    if (magnitude < 1.0) {
-      decimals = magnitude >= 0.1 ? 7 : (magnitude >= 0.01 ? 8 : 9);
-    } else {
-      int int_digits = 1;
-      while (int_digits < 7 && magnitude >= kPow10[static_cast<std::size_t>(int_digits)]) {
-        ++int_digits;
-      }
-      decimals = 7 - int_digits;
-    }
-    // Round half away from zero, as llround, without the libm call (magnitude > 0 here).
-    auto scaled =
-        static_cast<std::uint64_t>(magnitude * kPow10[static_cast<std::size_t>(decimals)] + 0.5);
-    if (scaled == 0) {
-      *out = '0';
-      return out + 1;
-    }
-    // Strip trailing zeros of the fraction without changing the value.
-    while (decimals > 0 && scaled % 10 == 0) {
-      scaled /= 10;
-      --decimals;
-    }
-    if (value < 0) *out++ = '-';
-    const std::uint64_t unit = kPow10Int[static_cast<std::size_t>(decimals)];
-    out = write_index(out, scaled / unit);
-    if (decimals > 0) {
-      *out++ = '.';
-      write_padded(out, scaled % unit, decimals);
-      out += decimals;
-    }
-    return out;
-  }
+  const double magnitude = std::fabs(value);
+  if (magnitude >= 1e-3 && magnitude < 1e7) return write_fixed(out, value, magnitude);
   if (magnitude == 0.0) {
     *out = '0';
     return out + 1;

@@ -42,6 +42,22 @@ TEST(NumberFormat, AgreesWithToCharsSevenDigits) {
   }
 }
 
+TEST(NumberFormat, AgreesWithToCharsWhereRoundingCarriesIntoAnEighthDigit) {
+  // Just below each power of ten, rounding to 7 digits carries into a new digit (9999999.6 →
+  // 10000000): the widest case the fast path handles, at every decimal-point position.
+  for (int e = -3; e <= 6; ++e) {
+    const double p = std::pow(10.0, e);
+    for (const double v : {p, p * 0.99999996, p * 0.99999994, std::nextafter(p, 0.0), -p * 0.5}) {
+      char expected[64];
+      const auto r = std::to_chars(expected, expected + 64, v, std::chars_format::general, 7);
+      EXPECT_EQ(format_number(v), std::string(expected, r.ptr)) << "value " << v;
+    }
+  }
+  // At the top of the fast range the carry gives 8 digits where %.7g says "1e+07": the text
+  // written since the first reference stills, kept byte for byte.
+  EXPECT_EQ(format_number(9999999.6), "10000000");
+}
+
 TEST(NumberFormat, RoundTripsWithinHalfAUnitOfTheSeventhDigit) {
   // Seven significant digits: |parsed − v| ≤ 0.5·10^(e−6) with e = floor(log10|v|), so the
   // relative error is at most 5e-7.
@@ -69,6 +85,8 @@ TEST(NumberFormat, WritesIndices) {
   EXPECT_EQ(std::string(buffer, write_index(buffer, 7)), "7");
   EXPECT_EQ(std::string(buffer, write_index(buffer, 10)), "10");
   EXPECT_EQ(std::string(buffer, write_index(buffer, 4000000)), "4000000");
+  EXPECT_EQ(std::string(buffer, write_index(buffer, 99999999)), "99999999");  // 8 digits: fast
+  EXPECT_EQ(std::string(buffer, write_index(buffer, 100000000)), "100000000");
   EXPECT_EQ(std::string(buffer, write_index(buffer, 12345678901ULL)), "12345678901");
 }
 
