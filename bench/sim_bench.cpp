@@ -1,6 +1,6 @@
 // sim_bench: World substeps at 10 k … 10 M drops; counter drop_steps (per second).
 // Args: drops, threads (0 = all cores), merging (0/1). Keep runs short on a shared machine:
-//   sim_bench --benchmark_min_time=0.1 --benchmark_filter='/(10000|100000|1000000)/'
+//   sim_bench --benchmark_min_time=0.1 --benchmark_filter='drops:(10000|100000|1000000)/'
 #include <benchmark/benchmark.h>
 
 #include <cmath>

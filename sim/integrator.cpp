@@ -1,7 +1,8 @@
 // The hot loop (see integrator.h). Drops go through in blocks: first a branch-free arithmetic
 // pass over plain float arrays (so the compiler can vectorise it) that also writes an
 // "event" byte per drop, then a scan of those bytes that collects the rare events. Turbulence
-// (a per-drop wind) is evaluated into a block buffer before the arithmetic pass.
+// (a per-drop wind) is evaluated into a block buffer, one mode at a time with sin_approx, so
+// that it vectorises too.
 #include "sim/integrator.h"
 
 #include <algorithm>
@@ -20,9 +21,39 @@ enum : std::uint8_t { kStay = 0, kGround = 1, kGone = 2 };
 // Block-local structure of arrays: the Frame's vec3 arrays are interleaved (x, y, z), which
 // compilers do not vectorise well, so each block is transposed in, computed, transposed out.
 struct Block {
-  std::array<float, kBlock> px, py, pz, vx, vy, vz, ax, ay, az, wx, wy, wz;
+  std::array<float, kBlock> px, py, pz, vx, vy, vz, ax, ay, az, wx, wy, wz, sin;
   std::array<std::uint8_t, kBlock> event;
 };
+
+// Per-drop wind of the block (uniform part + turbulence at the drop) into b.wx/wy/wz; the same
+// arithmetic as Wind::turbulence_at.
+void turbulence_block(const Wind& wind, const StepConstants& c, std::size_t n, Block& b) {
+  const Wind::Modes& modes = wind.modes();
+  const glm::vec3 shift(modes.drift * c.time_s);
+  const float sx = shift.x, sy = shift.y, sz = shift.z;
+  float* __restrict wx = b.wx.data();
+  float* __restrict wy = b.wy.data();
+  float* __restrict wz = b.wz.data();
+  const float* __restrict px = b.px.data();
+  const float* __restrict py = b.py.data();
+  const float* __restrict pz = b.pz.data();
+  float* __restrict sn = b.sin.data();
+  std::fill_n(wx, n, 0.0f);
+  std::fill_n(wy, n, 0.0f);
+  std::fill_n(wz, n, 0.0f);
+  for (int m = 0; m < Wind::kModes; ++m) {
+    const float kx = modes.k[m].x, ky = modes.k[m].y, kz = modes.k[m].z, ph = modes.phase[m];
+    const float ax = modes.amp[m].x, ay = modes.amp[m].y, az = modes.amp[m].z;
+    for (std::size_t i = 0; i < n; ++i) {
+      sn[i] = sin_approx(kx * (px[i] - sx) + ky * (py[i] - sy) + kz * (pz[i] - sz) + ph);
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      wx[i] += ax * sn[i], wy[i] += ay * sn[i], wz[i] += az * sn[i];
+    }
+  }
+  const float cwx = c.wind.x, cwy = c.wind.y, cwz = c.wind.z;
+  for (std::size_t i = 0; i < n; ++i) wx[i] += cwx, wy[i] += cwy, wz[i] += cwz;
+}
 
 // One block of drops [begin, begin + n). b.wx/wy/wz hold the per-drop wind when kTurbulent,
 // else the uniform wind c.wind applies.
@@ -36,6 +67,7 @@ void integrate_block(DropState& state, std::size_t begin, std::size_t n, const S
     b.px[i] = pos[i].x, b.py[i] = pos[i].y, b.pz[i] = pos[i].z;
     b.vx[i] = vel[i].x, b.vy[i] = vel[i].y, b.vz[i] = vel[i].z;
   }
+  if constexpr (kTurbulent) turbulence_block(*c.turbulence, c, n, b);
   float* __restrict age = state.drops.age.data() + begin;
   float* __restrict opacity = state.drops.opacity.data() + begin;
   const float* __restrict rate = state.drops.vanishing_rate.data() + begin;
@@ -49,6 +81,9 @@ void integrate_block(DropState& state, std::size_t begin, std::size_t n, const S
   const float cwx = c.wind.x, cwy = c.wind.y, cwz = c.wind.z;
   const float a0 = c.a0, a1 = c.a1, b0 = c.b0, b1 = c.b1;
   const float ceiling = c.ceiling, ground = c.ground, min_opacity = c.min_opacity;
+  const float fa0 = c.fa0, fa1 = c.fa1, fb0 = c.fb0, fb1 = c.fb1;
+  const float ea0 = c.ea0, ea1 = c.ea1, eb0 = c.eb0, eb1 = c.eb1;
+  const float inv_g = 1.0f / g;
   float* __restrict px = b.px.data();
   float* __restrict py = b.py.data();
   float* __restrict pz = b.pz.data();
@@ -87,10 +122,16 @@ void integrate_block(DropState& state, std::size_t begin, std::size_t n, const S
     const float rx = qx - ox, rz = qz - oz;
     const float a = rx * ax + rz * az;
     const float bb = rx * bx + rz * bz;
+    // How far beyond the footprint this drop can be and still drift onto it: height above the
+    // ground / terminal speed (drag = g / v_t², so 1/v_t = sqrt(drag / g)) × drift speed.
+    const float reach = (qy - ground) * std::sqrt(drag[i] * inv_g);
     // Written so that NaN anywhere makes `inside` false and the drop leaves.
-    const int inside = static_cast<int>(a >= a0) & static_cast<int>(a <= a1) &
-                       static_cast<int>(bb >= b0) & static_cast<int>(bb <= b1) &
-                       static_cast<int>(qy <= ceiling) & static_cast<int>(o >= min_opacity);
+    const int inside =
+        static_cast<int>(a >= a0) & static_cast<int>(a <= a1) & static_cast<int>(bb >= b0) &
+        static_cast<int>(bb <= b1) & static_cast<int>(a >= fa0 - reach * ea0) &
+        static_cast<int>(a <= fa1 + reach * ea1) & static_cast<int>(bb >= fb0 - reach * eb0) &
+        static_cast<int>(bb <= fb1 + reach * eb1) & static_cast<int>(qy <= ceiling) &
+        static_cast<int>(o >= min_opacity);
     const int below = static_cast<int>(!(qy > ground));
     // kGone if outside, else kGround if below, else kStay — without a branch.
     event[i] = static_cast<std::uint8_t>(kGone - inside * (kGone - below * kGround));
@@ -108,13 +149,6 @@ void integrate_all(DropState& state, std::size_t begin, std::size_t end, const S
   Block block;
   for (std::size_t b = begin; b < end; b += kBlock) {
     const std::size_t n = std::min(kBlock, end - b);
-    if constexpr (kTurbulent) {
-      for (std::size_t i = 0; i < n; ++i) {
-        const glm::vec3 w =
-            c.wind + c.turbulence->turbulence_at(state.drops.position[b + i], c.time_s);
-        block.wx[i] = w.x, block.wy[i] = w.y, block.wz[i] = w.z;
-      }
-    }
     integrate_block<kTurbulent, kFading>(state, b, n, c, block);
     for (std::size_t i = 0; i < n; ++i) {
       if (block.event[i] == kStay) [[likely]]

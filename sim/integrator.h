@@ -25,8 +25,13 @@ struct StepConstants {
   glm::vec3 across{1.0f, 0.0f, 0.0f};
   glm::vec3 along{0.0f, 0.0f, 1.0f};
   float a0 = 0, a1 = 0, b0 = 0, b1 = 0, ground = 0, ceiling = 0;
-  float min_opacity = 0.0f;  ///< drops faded below this leave
-  bool fading = false;       ///< any drop has a vanishing rate > 0 (else opacity stays put)
+  // Within the box, a drop h above the ground with terminal speed v_t stays only while it can
+  // still reach the footprint [fa0, fa1] × [fb0, fb1] before the ground: at most h·e/v_t
+  // beyond each side, e the side's drift speed bound (see spawn_region.h).
+  float fa0 = 0, fa1 = 0, fb0 = 0, fb1 = 0;
+  float ea0 = 0, ea1 = 0, eb0 = 0, eb1 = 0;  ///< m/s, >= 0
+  float min_opacity = 0.0f;                  ///< drops faded below this leave
+  bool fading = false;  ///< any drop has a vanishing rate > 0 (else opacity stays put)
 };
 
 /// Indices (ascending) of drops that reached the ground, and of drops that left otherwise.

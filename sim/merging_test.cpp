@@ -32,7 +32,7 @@ TEST(Merging, TouchingDropsCoalesceConservingVolumeAndMomentum) {
   s.push(drop(2, {0.0012f, 1, 0}, {1, -6, 0}, 2e-3f));  // centres 1.2 mm < (1+2)/2 mm
   s.push(drop(3, {1, 1, 1}, {0, -4, 0}, 1e-3f));        // far away
   std::uint64_t next = 10;
-  const MergeResult r = merge_touching(s, 0.01f, 0.05f, 0.15f, 6.5e-3, next, 1);
+  const MergeResult r = merge_touching(s, 0.01f, 6.5e-3, next, 1);
   ASSERT_EQ(r.merges, 1u);
   ASSERT_EQ(s.size(), 2u);
   // Volume: 1³ + 2³ = 9 mm³-units → D = 9^(1/3) mm = 2.0801 mm.
@@ -52,7 +52,7 @@ TEST(Merging, FastDropOvertakingWithinTheIntervalIsCaught) {
   std::uint64_t next = 10;
   // The lower one moved down faster, so going back in time they approach: gap at τ = −5 ms
   // is 0.015 − 3·0.005 = 0.
-  EXPECT_EQ(merge_touching(s, 0.01f, 0.05f, 0.15f, 6.5e-3, next, 1).merges, 1u);
+  EXPECT_EQ(merge_touching(s, 0.01f, 6.5e-3, next, 1).merges, 1u);
 }
 
 TEST(Merging, ManyDropsConserveTotalWater) {
@@ -64,10 +64,26 @@ TEST(Merging, ManyDropsConserveTotalWater) {
   }
   const double before = volume_sum(s);
   std::uint64_t next = 20000;
-  const MergeResult r = merge_touching(s, 0.01f, 0.05f, 0.12f, 6.5e-3, next, 1);
+  const MergeResult r = merge_touching(s, 0.01f, 6.5e-3, next, 1);
   EXPECT_GT(r.merges, 100u);  // 160 000 drops/m³: plenty of contacts
   EXPECT_NEAR(volume_sum(s), before, 1e-5 * before);
   for (const float d : s.drops.diameter) EXPECT_LE(d, 6.5e-3f);
+}
+
+TEST(Merging, SidewaysRelativeMotionWithinTheIntervalIsCaught) {
+  DropState s;
+  // A small drop lagging 1 m/s behind a gust relative to a large one (the thunderstorm's
+  // measured spread): now 12 mm apart sideways, 10 ms ago 2 mm apart < 3 mm → they touched.
+  s.push(drop(1, {0, 1, 0}, {3, -4, 0}, 1e-3f));
+  s.push(drop(2, {0.012f, 1, 0}, {4, -4, 0}, 5e-3f));
+  s.push(drop(3, {0.5f, 1, 0.5f}, {3.2f, -4, 0}, 1e-3f));  // far away
+  std::uint64_t next = 10;
+  MergeBounds b;
+  EXPECT_EQ(merge_touching(s, 0.01f, 6.5e-3, next, 1, nullptr, 0.0, &b).merges, 1u);
+  // The bound is measured from the drops: 1 m/s sideways, 0 vertically (plus margins).
+  EXPECT_NEAR(b.dv_m_per_s.x, 1.0f, 0.02f);
+  EXPECT_LT(b.dv_m_per_s.y, 0.01f);
+  EXPECT_GE(b.touch_m, 5e-3f);
 }
 
 TEST(Merging, MergedDropPastCriticalDiameterBreaksUp) {
@@ -76,7 +92,7 @@ TEST(Merging, MergedDropPastCriticalDiameterBreaksUp) {
   s.push(drop(2, {0.004f, 1, 0}, {0, -9, 0}, 5.5e-3f));  // 4 mm apart < 5.5 mm: touching
   const double before = volume_sum(s);
   std::uint64_t next = 10;
-  const MergeResult r = merge_touching(s, 0.01f, 0.05f, 0.15f, 6.5e-3, next, 1);
+  const MergeResult r = merge_touching(s, 0.01f, 6.5e-3, next, 1);
   EXPECT_EQ(r.merges, 1u);
   EXPECT_EQ(r.breakups, 1u);
   // 2·5.5³ = 332.75 > 6.5³ = 274.6: the 6.93 mm drop breaks into ⌈2·332.75/274.6⌉ = 3.

@@ -32,14 +32,22 @@ SpawnRegion::SpawnRegion(const ViewVolume& view, double ground_y_m, double ceili
   if (m_ceiling <= m_ground) m_ceiling = m_ground + std::max(ceiling_margin_m, 1.0);
   const double fall_time = (m_ceiling - m_ground) / std::max(slowest_fall_m_per_s, 0.1);
   const double wa = glm::dot(wind_h, m_across), wb = glm::dot(wind_h, m_along);
-  auto extend = [&](double w) {
-    return std::min(kMaxExtensionM, fall_time * std::max(0.0, w + wind_spread));
-  };
   // Wind blowing toward +a carries drops in from the −a side: extend that side.
-  m_a0 = a0 - extend(wa);
-  m_a1 = a1 + extend(-wa);
-  m_b0 = b0 - extend(wb);
-  m_b1 = b1 + extend(-wb);
+  m_ea0 = std::max(0.0, wa + wind_spread);
+  m_ea1 = std::max(0.0, -wa + wind_spread);
+  m_eb0 = std::max(0.0, wb + wind_spread);
+  m_eb1 = std::max(0.0, -wb + wind_spread);
+  auto extend = [&](double e) { return std::min(kMaxExtensionM, fall_time * e); };
+  m_a0 = a0 - extend(m_ea0);
+  m_a1 = a1 + extend(m_ea1);
+  m_b0 = b0 - extend(m_eb0);
+  m_b1 = b1 + extend(m_eb1);
+}
+
+bool SpawnRegion::reaches_footprint(double a, double b, double y, double fall_m_per_s) const {
+  const double reach = (y - m_ground) / fall_m_per_s;  // time to the ground, s
+  return a >= m_ma0 - reach * m_ea0 && a <= m_ma1 + reach * m_ea1 && b >= m_mb0 - reach * m_eb0 &&
+         b <= m_mb1 + reach * m_eb1;
 }
 
 glm::dvec3 SpawnRegion::point(double a, double b, double y) const {

@@ -4,6 +4,12 @@
 // view already at the right density — and vertically from the ground to a ceiling
 // `ceiling_margin_m` above the frustum's highest point. Drops are born on the ceiling and die
 // when they reach the ground or leave the box.
+// Only part of the upwind extension matters for a given drop: at height h above the ground, a
+// drop with terminal speed v_t drifts at most h·e/v_t sideways before it lands (e the drift
+// speed bound toward that side), so farther out it can never reach the footprint — nor the
+// view above it. Such drops are not created (fill, spawn) and leave as soon as they get there
+// (integrator), which cuts the simulated drops by the wedge above the extension's ground and
+// by most of it for large, fast drops.
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -33,6 +39,21 @@ class SpawnRegion {
   /// The unextended footprint rectangle, where ground water is measured, m².
   [[nodiscard]] double measure_area_m2() const { return (m_ma1 - m_ma0) * (m_mb1 - m_mb0); }
   [[nodiscard]] bool in_measure_area(const glm::dvec3& p) const;
+  /// True if a drop at yaw-frame (a, b), height y, falling at fall_m_per_s can still drift
+  /// onto the footprint before reaching the ground (see above).
+  [[nodiscard]] bool reaches_footprint(double a, double b, double y, double fall_m_per_s) const;
+
+  /// The footprint rectangle (where ground water is measured) in the yaw frame.
+  [[nodiscard]] double fa0() const { return m_ma0; }
+  [[nodiscard]] double fa1() const { return m_ma1; }
+  [[nodiscard]] double fb0() const { return m_mb0; }
+  [[nodiscard]] double fb1() const { return m_mb1; }
+  /// Bounds of the sideways drift speed onto the footprint from each side, m/s, >= 0: a drop
+  /// beyond fa0 moves toward +a at most ea0, one beyond fa1 toward −a at most ea1, etc.
+  [[nodiscard]] double ea0() const { return m_ea0; }
+  [[nodiscard]] double ea1() const { return m_ea1; }
+  [[nodiscard]] double eb0() const { return m_eb0; }
+  [[nodiscard]] double eb1() const { return m_eb1; }
 
   [[nodiscard]] double ground() const { return m_ground; }
   [[nodiscard]] double ceiling() const { return m_ceiling; }
@@ -48,6 +69,7 @@ class SpawnRegion {
   glm::dvec3 m_origin{}, m_across{1, 0, 0}, m_along{0, 0, 1};
   double m_a0 = 0, m_a1 = 0, m_b0 = 0, m_b1 = 0;      // simulated rectangle
   double m_ma0 = 0, m_ma1 = 0, m_mb0 = 0, m_mb1 = 0;  // measured rectangle
+  double m_ea0 = 0, m_ea1 = 0, m_eb0 = 0, m_eb1 = 0;  // drift speed bounds, m/s
   double m_ground = 0, m_ceiling = 0;
 };
 

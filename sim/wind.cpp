@@ -32,10 +32,11 @@ Wind::Wind(const WindParams& params, std::uint64_t seed)
     const glm::dvec3 e1 = glm::normalize(glm::cross(dir, helper));
     const glm::dvec3 e2 = glm::cross(dir, e1);
     const double ap = 2.0 * std::numbers::pi * u(2);
-    m_k[m] = glm::vec3(dir * k);
-    m_amp[m] = glm::vec3((std::cos(ap) * e1 + std::sin(ap) * e2) * amp);
-    m_phase[m] = static_cast<float>(2.0 * std::numbers::pi * u(3));
+    m_modes.k[m] = glm::vec3(dir * k);
+    m_modes.amp[m] = glm::vec3((std::cos(ap) * e1 + std::sin(ap) * e2) * amp);
+    m_modes.phase[m] = static_cast<float>(2.0 * std::numbers::pi * u(3));
   }
+  m_modes.drift = params.velocity_m_per_s;
 }
 
 glm::dvec3 Wind::uniform_at(double t_s) const {
@@ -47,9 +48,13 @@ glm::dvec3 Wind::uniform_at(double t_s) const {
 glm::vec3 Wind::turbulence_at(const glm::vec3& p, double t_s) const {
   if (!m_turbulence) return glm::vec3{0.0f};
   // Frozen turbulence advected by the steady wind.
-  const glm::vec3 q = p - glm::vec3(m_params.velocity_m_per_s * t_s);
+  // Same arithmetic as the integrator's block loop, so both see the same field.
+  const glm::vec3 q = p - glm::vec3(m_modes.drift * t_s);
   glm::vec3 w{0.0f};
-  for (int m = 0; m < kModes; ++m) w += m_amp[m] * std::sin(glm::dot(m_k[m], q) + m_phase[m]);
+  for (int m = 0; m < kModes; ++m) {
+    const glm::vec3& k = m_modes.k[m];
+    w += m_modes.amp[m] * sin_approx(k.x * q.x + k.y * q.y + k.z * q.z + m_modes.phase[m]);
+  }
   return w;
 }
 
@@ -63,6 +68,16 @@ double Wind::max_horizontal_speed() const {
   if (m_params.gusts) s += 0.1 * m_params.gust_strength;
   if (m_turbulence) s += m_params.turbulence_m_per_s * std::sqrt(2.0 * kModes);
   return s;
+}
+
+double Wind::turbulence_lipschitz_per_s() const {
+  if (!m_turbulence) return 0.0;
+  // Each mode a·sin(k·q + φ) changes by at most |a|·|k|·|Δq|.
+  double l = 0.0;
+  for (int m = 0; m < kModes; ++m) {
+    l += static_cast<double>(glm::length(m_modes.amp[m])) * glm::length(m_modes.k[m]);
+  }
+  return l;
 }
 
 }  // namespace raintrace::sim

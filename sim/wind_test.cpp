@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 
 namespace raintrace::sim {
 namespace {
@@ -67,6 +69,31 @@ TEST(Wind, TurbulenceHasTheRequestedRmsAndNoDivergence) {
   EXPECT_NEAR(std::sqrt(sum / n), 2.0, 0.3);
   // Gradients are ~ amplitude·k ≈ 2·2.1 = 4 /s; divergence is zero up to float differencing.
   EXPECT_LT(max_div, 0.05);
+}
+
+TEST(Wind, SinApproxMatchesStdSin) {
+  // The turbulence phase stays well inside ±100 rad for any scene (k·q with |q| < 1 km needs
+  // k < 0.1 rad/m); over that range float rounding of x − nπ gives ~1e-7.
+  double worst = 0.0;
+  for (float x = -100.0f; x < 100.0f; x += 0.00731f) {
+    worst = std::max(worst, std::abs(static_cast<double>(sin_approx(x)) - std::sin(double{x})));
+  }
+  EXPECT_LT(worst, 2e-7);
+}
+
+TEST(Wind, TurbulenceLipschitzBoundsDifferences) {
+  WindParams p;
+  p.turbulence_m_per_s = 1.5;
+  p.turbulence_scale_m = 2.0;
+  const Wind wind(p, 3);
+  // Four modes of amplitude 1.5·sqrt(2/4) and wave number 2π/2: L = 4·1.0607·3.1416 = 13.33.
+  EXPECT_NEAR(wind.turbulence_lipschitz_per_s(), 13.33, 0.01);
+  for (int i = 0; i < 200; ++i) {
+    const glm::vec3 a{0.1f * static_cast<float>(i), 1.0f, 0.3f};
+    const glm::vec3 b = a + glm::vec3{0.01f, -0.02f, 0.005f};
+    EXPECT_LE(glm::length(wind.turbulence_at(a, 0.5) - wind.turbulence_at(b, 0.5)),
+              wind.turbulence_lipschitz_per_s() * glm::length(a - b) + 1e-5);
+  }
 }
 
 TEST(Wind, NoTurbulenceByDefault) {

@@ -65,16 +65,6 @@ World::World(const SimParams& params)
   const double prewarm = m_params.prewarm_s < 0.0 ? default_prewarm(m_params) : m_params.prewarm_s;
   m_prewarm_steps = std::llround(prewarm / m_params.substep_s);
   m_merge_every = std::max(1, static_cast<int>(std::lround(kMergeInterval_s / m_params.substep_s)));
-  const double touch_m =
-      std::max(m_params.rain.diameter_max_mm, m_params.rain.breakup_diameter_mm) * 1e-3;
-  // Vertical relative speeds stay below the fastest terminal velocity; horizontal ones come
-  // from breakup kicks and from small and large drops lagging differently behind gusts.
-  const double window = m_merge_every * m_params.substep_s;
-  const double vertical = terminal_velocity(8e-3) + 1.0;
-  // Breakup kicks are 0.3 m/s per fragment; turbulence differs little over millimetres.
-  const double horizontal = 0.6 + (m_params.wind.gusts ? 0.1 * m_params.wind.gust_strength : 0.0);
-  m_merge_cell_h_m = static_cast<float>(touch_m + window * horizontal);
-  m_merge_cell_v_m = static_cast<float>(touch_m + window * vertical);
   m_events.resize(static_cast<std::size_t>(thread_count()));
   fill();
   while (m_step < m_prewarm_steps) step();
@@ -101,11 +91,13 @@ void World::fill() {
     const double d = m_sizes.sample_in_air(u(0));
     const double vt = terminal_velocity(d);
     const double y = m_region.ground() + u(3) * (m_region.ceiling() - m_region.ground());
+    const double a = m_region.a0() + u(1) * (m_region.a1() - m_region.a0());
+    const double b = m_region.b0() + u(2) * (m_region.b1() - m_region.b0());
+    // Drawn (so ids and the rest of the fill do not depend on it), but not simulated.
+    if (!m_region.reaches_footprint(a, b, y, vt)) continue;
     NewDrop drop;
     drop.id = id;
-    drop.position =
-        glm::vec3(m_region.point(m_region.a0() + u(1) * (m_region.a1() - m_region.a0()),
-                                 m_region.b0() + u(2) * (m_region.b1() - m_region.b0()), y));
+    drop.position = glm::vec3(m_region.point(a, b, y));
     drop.velocity = glm::vec3(wind.x, -vt, wind.z);
     drop.diameter = static_cast<float>(d);
     // As if it had fallen from the ceiling at terminal velocity.
@@ -132,11 +124,12 @@ void World::spawn(double t_s) {
     const double vt = terminal_velocity(d);
     // Born somewhere within this substep's fall below the ceiling, so that no layers form.
     const double y = m_region.ceiling() - u(3) * vt * dt;
+    const double a = m_region.a0() + u(1) * (m_region.a1() - m_region.a0());
+    const double b = m_region.b0() + u(2) * (m_region.b1() - m_region.b0());
+    if (!m_region.reaches_footprint(a, b, y, vt)) continue;
     NewDrop drop;
     drop.id = id;
-    drop.position =
-        glm::vec3(m_region.point(m_region.a0() + u(1) * (m_region.a1() - m_region.a0()),
-                                 m_region.b0() + u(2) * (m_region.b1() - m_region.b0()), y));
+    drop.position = glm::vec3(m_region.point(a, b, y));
     drop.velocity = glm::vec3(wind.x, -vt, wind.z);
     drop.diameter = static_cast<float>(d);
     drop.vanishing_rate = static_cast<float>(m_params.rain.vanishing_rate_per_s);
@@ -199,6 +192,14 @@ void World::step() {
   c.b1 = static_cast<float>(m_region.b1());
   c.ground = static_cast<float>(m_region.ground());
   c.ceiling = static_cast<float>(m_region.ceiling());
+  c.fa0 = static_cast<float>(m_region.fa0());
+  c.fa1 = static_cast<float>(m_region.fa1());
+  c.fb0 = static_cast<float>(m_region.fb0());
+  c.fb1 = static_cast<float>(m_region.fb1());
+  c.ea0 = static_cast<float>(m_region.ea0());
+  c.ea1 = static_cast<float>(m_region.ea1());
+  c.eb0 = static_cast<float>(m_region.eb0());
+  c.eb1 = static_cast<float>(m_region.eb1());
   c.min_opacity = kMinOpacity;
   c.fading = m_params.rain.vanishing_rate_per_s > 0.0;
 
@@ -226,9 +227,9 @@ void World::step() {
   spawn(t);
   ++m_step;
   if (m_params.rain.merging && m_step % m_merge_every == 0) {
-    const MergeResult r = merge_touching(
-        m_state, static_cast<float>(m_merge_every * dt), m_merge_cell_h_m, m_merge_cell_v_m,
-        m_params.rain.breakup_diameter_mm * 1e-3, m_next_id, m_params.seed);
+    const MergeResult r = merge_touching(m_state, static_cast<float>(m_merge_every * dt),
+                                         m_params.rain.breakup_diameter_mm * 1e-3, m_next_id,
+                                         m_params.seed, &m_wind, time_s());
     m_merges += r.merges;
     m_breakups += r.breakups;
   }

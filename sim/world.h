@@ -81,8 +81,6 @@ class World {
   std::int64_t m_prewarm_steps = 0;
   std::uint64_t m_next_id = 0;
   int m_merge_every = 1;
-  float m_merge_cell_h_m = 0.03f;
-  float m_merge_cell_v_m = 0.1f;
   double m_ground_water_m3 = 0.0;
   std::uint64_t m_ground_hits = 0;
   std::uint64_t m_splash_events = 0;

@@ -127,6 +127,28 @@ TEST(World, DropsNeverEscapeOrBecomeNaNInStrongGustyTurbulentWind) {
   EXPECT_GT(world.drops().size(), 0u);
 }
 
+TEST(World, SimulatesOnlyDropsThatCanDriftOntoTheFootprint) {
+  SimParams p = small_scene();
+  p.wind.velocity_m_per_s = {3.0, 0.0, 0.0};
+  World world(p);
+  world.advance_to(0.2);
+  const SpawnRegion& r = world.region();
+  const Drops& d = world.drops();
+  std::size_t upwind = 0;
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    const glm::dvec3 q(d.position[i]);
+    // 1 % slack: float positions, and a merged or broken drop's speed differs from v_t.
+    EXPECT_TRUE(
+        r.reaches_footprint(r.across(q), r.along(q), q.y, 0.99 * terminal_velocity(d.diameter[i])));
+    upwind += r.across(q) < r.fa0();
+  }
+  // The upwind wedge is populated: wind-blown rain enters the view at full density.
+  EXPECT_GT(upwind, d.size() / 10);
+  // About half the box (the wedge above the extension, thinner for fast drops) is skipped.
+  EXPECT_LT(static_cast<double>(d.size()),
+            0.8 * world.sizes().number_density_per_m3() * r.volume_m3());
+}
+
 bool same_frame(const Frame& a, const Frame& b) {
   auto same = [](const auto& x, const auto& y) {
     return x.size() == y.size() &&
