@@ -31,7 +31,7 @@ step "sanitized build (ASan + UBSan)"
 "$root/scripts/build.sh" "$root/build-asan" -DRAINTRACE_SANITIZE=ON -DRAINTRACE_BUILD_BENCH=OFF
 step "sanitized tests"
 (cd "$root/build-asan" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-  ctest --output-on-failure -j "$jobs" --timeout 1800)
+  LSAN_OPTIONS=suppressions="$root/cmake/lsan.supp" ctest --output-on-failure -j "$jobs" --timeout 1800)
 
 step "fuzzing the scene loader (60 s)"
 "$root/scripts/fuzz.sh" 60
