@@ -69,8 +69,10 @@ Examples:
   raintrace render out/default                                     # an already exported folder
   raintrace render examples/default.toml -o /shared/out --backend slurm --partition short --tasks 16
 
+Locally, POV-Ray starts on each range of frames as soon as it is exported, while later
+frames are still simulated (Slurm exports everything first, then submits).
 Re-running the same command renders only frames that are missing or whose inputs changed;
-Ctrl-C stops POV-Ray, keeps finished frames, and the next run resumes.
+Ctrl-C stops the export and POV-Ray, keeps finished frames, and the next run resumes.
 Output: OUT/images/frame_NNNN.png, OUT/animation.mp4 and .gif (needs ffmpeg),
 OUT/contact_sheet.png, OUT/manifest.json (per-frame status and seconds), OUT/logs/.
 Slurm: OUT and the raintrace binary must be on a filesystem every node mounts at the same path;
