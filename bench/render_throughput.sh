@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Render throughput of `raintrace render` (simulate + export + POV-Ray), the paper's Table 1:
 #   1. frames/s at 2k/5k/10k/15k drops, 320×240 preview, for --jobs 1, 2, 3 (best marked);
-#   2. frames/hour at 640×360 preview and 1280×720 final with the best --jobs.
-# Each row also gives the CPU busy share over the run (from /proc/stat: 100 % = all cores).
+#   2. frames/hour for examples/default.toml at 640×360 preview and 1280×720 final, best --jobs.
+# Each row also gives the run's own CPU share: user + system seconds of raintrace and every
+# POV-Ray it ran, over wall seconds × cores (100 % = all cores busy with this run alone).
 # Run it on a quiet machine: other work on the cores shows up directly in the numbers.
 # Usage: bench/render_throughput.sh [RAINTRACE] [--quick]
 #   RAINTRACE defaults to build/cli/raintrace; --quick renders 8 frames and only 2k and 15k.
@@ -14,8 +15,8 @@ quick=${2:-}
 work=$(mktemp -d /tmp/raintrace_render_bench.XXXXXX)
 trap 'rm -rf "$work"' EXIT
 
-frames=48; counts=(2000 5000 10000 15000); hd_frames=12
-if [[ $quick == --quick ]]; then frames=8; counts=(2000 15000); hd_frames=2; fi
+frames=48; counts=(2000 5000 10000 15000); hd_frames=24; final_frames=6
+if [[ $quick == --quick ]]; then frames=8; counts=(2000 15000); hd_frames=4; final_frames=2; fi
 
 # Drops in view = density × frustum volume. At 5 mm/h Marshall-Palmer the density is ~630 /m³
 # (docs/scene-format.md); a 60° (horizontal) 4:3 frustum from 0.3 m to F holds
@@ -50,22 +51,16 @@ TOML
   echo "$f"
 }
 
-cpu_sample() { awk '/^cpu / { idle = $5 + $6; total = 0; for (i = 2; i <= 9; i++) total += $i;
-                             print total, idle }' /proc/stat; }
-
-# run LABEL FRAMES -- raintrace args… ; prints seconds, frames/s, frames/h, CPU busy %
+# run LABEL FRAMES -- raintrace args… ; prints seconds, frames/s, frames/h, CPU share
 run() {
   local label=$1 n=$2; shift 3
-  read -r t0 i0 < <(cpu_sample)
-  local start end
-  start=$(date +%s.%N)
-  "$exe" render "$@" --no-movie >"$work/last.log" 2>&1 || {
+  /usr/bin/time -f "%e %U %S" -o "$work/time.txt" "$exe" render "$@" --no-movie \
+    >"$work/last.log" 2>&1 || {
     echo "render_throughput: '$label' failed, see below" >&2; tail -20 "$work/last.log" >&2; exit 1; }
-  end=$(date +%s.%N)
-  read -r t1 i1 < <(cpu_sample)
-  awk -v l="$label" -v n="$n" -v s="$start" -v e="$end" -v t="$((t1 - t0))" -v i="$((i1 - i0))" \
-    'BEGIN { d = e - s; printf "%-34s %6d %9.1f %9.2f %10.0f %7.0f%%\n", l, n, d, n / d, 3600 * n / d,
-             (t > 0 ? 100 * (t - i) / t : 0) }'
+  read -r wall user sys <"$work/time.txt"
+  awk -v l="$label" -v n="$n" -v d="$wall" -v u="$user" -v s="$sys" -v cores="$(nproc)" \
+    'BEGIN { printf "%-34s %6d %9.1f %9.2f %10.0f %7.0f%%\n", l, n, d, n / d, 3600 * n / d,
+             100 * (u + s) / (d * cores) }'
 }
 
 header() { printf "%-34s %6s %9s %9s %10s %8s\n" "case" "frames" "seconds" "frames/s" "frames/h" "CPU"; }
@@ -90,8 +85,9 @@ for n in "${counts[@]}"; do
 done
 echo "best --jobs at ${counts[-1]} drops: $best_jobs ($best_fps frames/s; target >= 5)"
 
-scene=$(scene_for 15000)
-run "640x360 preview, --jobs $best_jobs" "$hd_frames" -- "$scene" -o "$work/out_360" \
-  --jobs "$best_jobs" --width 640 --height 360 --frames "1-$hd_frames"
-run "1280x720 final, --jobs $best_jobs" "$hd_frames" -- "$scene" -o "$work/out_720" \
-  --jobs "$best_jobs" --width 1280 --height 720 --quality final --frames "1-$hd_frames"
+# The default example as users render it: its own 640×360 preview, then 1280×720 final.
+default=$root/examples/default.toml
+run "default 640x360 preview, --jobs $best_jobs" "$hd_frames" -- "$default" -o "$work/out_360" \
+  --jobs "$best_jobs" --frames "1-$hd_frames"
+run "default 1280x720 final, --jobs $best_jobs" "$final_frames" -- "$default" -o "$work/out_720" \
+  --jobs "$best_jobs" --width 1280 --height 720 --quality final --frames "1-$final_frames"

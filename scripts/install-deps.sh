@@ -13,6 +13,7 @@ packages=(
   nlohmann-json3-dev                       # stats, manifest.json, compare reports
   libgtest-dev libgmock-dev libbenchmark-dev
   ffmpeg                                   # MP4 and GIF of a rendered animation
+  time                                     # /usr/bin/time in bench/*.sh
 )
 if [[ ${1:-} == --test ]]; then
   packages+=(
