@@ -117,6 +117,39 @@ TEST_F(PovrayRenderCli, MissingPovrayIsOneClearLineAndExitTwo) {
 }
 
 // Renders 10 slow frames in the background and returns once `frames_done` are recorded.
+using FinishedImages = std::map<int, std::filesystem::file_time_type>;
+
+/// The frames the manifest in `out` records as rendered, with their images' modification times;
+/// each of those images must be complete.
+FinishedImages finished_images(const std::filesystem::path& out) {
+  FinishedImages finished;
+  for (const auto& f : povgen::read_manifest(out / "manifest.json").frames) {
+    if (f.status != "rendered") continue;
+    finished[f.number] = std::filesystem::last_write_time(out / f.image);
+    EXPECT_TRUE(image_is_complete(out / f.image, 64, 36)) << f.image;
+  }
+  return finished;
+}
+
+/// A re-run after a kill rendered exactly the frames that were not finished, left the finished
+/// images untouched, and every one of the `frames` images is now complete.
+void expect_rerun_redid_only_unfinished(const Run& rerun, const std::filesystem::path& out,
+                                        const FinishedImages& finished, int frames) {
+  EXPECT_EQ(rerun.exit_code, 0) << rerun.output;
+  const int redo = frames - static_cast<int>(finished.size());
+  EXPECT_NE(rerun.output.find(std::to_string(redo) + " frames rendered, " +
+                              std::to_string(finished.size()) + " up to date"),
+            std::string::npos)
+      << rerun.output;
+  for (const auto& [frame, mtime] : finished) {
+    EXPECT_EQ(std::filesystem::last_write_time(out / final_image_name(Pass::image, frame)), mtime)
+        << "frame " << frame << " was rendered again";
+  }
+  for (int f = 1; f <= frames; ++f) {
+    EXPECT_TRUE(image_is_complete(out / final_image_name(Pass::image, f), 64, 36)) << f;
+  }
+}
+
 std::unique_ptr<ChildProcess> start_slow_render(const std::filesystem::path& dir, int frames_done) {
   testing::write_test_folder(dir / "out", {.frames = 10, .spheres = 6000});
   auto child = std::make_unique<ChildProcess>(
@@ -137,13 +170,7 @@ TEST_F(PovrayRenderCli, SigkillHalfwayThenRerunFinishesWithoutRedoingFinishedFra
   ::kill(child->pid(), SIGKILL);
   EXPECT_EQ(child->wait(), 128 + SIGKILL);
 
-  const auto before = povgen::read_manifest(dir / "out/manifest.json");
-  std::map<int, std::filesystem::file_time_type> finished;
-  for (const auto& f : before.frames) {
-    if (f.status != "rendered") continue;
-    finished[f.number] = std::filesystem::last_write_time(dir / "out" / f.image);
-    EXPECT_TRUE(image_is_complete(dir / "out" / f.image, 64, 36));
-  }
+  const FinishedImages finished = finished_images(dir / "out");
   ASSERT_GE(finished.size(), 3U);
   ASSERT_LT(finished.size(), 10U);
   // Whatever the killed run left at final names is complete; the rest only at temp names.
@@ -155,20 +182,7 @@ TEST_F(PovrayRenderCli, SigkillHalfwayThenRerunFinishesWithoutRedoingFinishedFra
   }
 
   const auto r = run_raintrace({"render", (dir / "out").string(), "--no-movie"}, dir / "log2");
-  EXPECT_EQ(r.exit_code, 0) << r.output;
-  const int redo = 10 - static_cast<int>(finished.size());
-  EXPECT_NE(r.output.find(std::to_string(redo) + " frames rendered, " +
-                          std::to_string(finished.size()) + " up to date"),
-            std::string::npos)
-      << r.output;
-  for (const auto& [frame, mtime] : finished) {
-    EXPECT_EQ(std::filesystem::last_write_time(dir / "out" / final_image_name(Pass::image, frame)),
-              mtime)
-        << "frame " << frame << " was rendered again";
-  }
-  for (int f = 1; f <= 10; ++f) {
-    EXPECT_TRUE(image_is_complete(dir / "out" / final_image_name(Pass::image, f), 64, 36)) << f;
-  }
+  expect_rerun_redid_only_unfinished(r, dir / "out", finished, 10);
   EXPECT_FALSE(std::filesystem::exists(dir / "out/images/.tmp") &&
                !std::filesystem::is_empty(dir / "out/images/.tmp"));
 }
@@ -271,30 +285,14 @@ TEST_F(PovrayRenderCli, SigkillWhileExportingAndRenderingThenRerunRedoesOnlyUnfi
       EXPECT_EQ(frame_file(dir / "out", f), frame_file(dir / "plain", f)) << "frame " << f;
     }
   }
-  std::map<int, std::filesystem::file_time_type> finished;
-  for (const auto& f : povgen::read_manifest(dir / "out/manifest.json").frames) {
-    if (f.status != "rendered") continue;
-    finished[f.number] = std::filesystem::last_write_time(dir / "out" / f.image);
-    EXPECT_TRUE(image_is_complete(dir / "out" / f.image, 64, 36));
-  }
+  const FinishedImages finished = finished_images(dir / "out");
   ASSERT_GE(finished.size(), 2U);
   ASSERT_LT(finished.size(), static_cast<std::size_t>(frames));
 
   const auto r = run_raintrace(args, dir / "log2");
-  EXPECT_EQ(r.exit_code, 0) << r.output;
-  const int redo = frames - static_cast<int>(finished.size());
-  EXPECT_NE(r.output.find(std::to_string(redo) + " frames rendered, " +
-                          std::to_string(finished.size()) + " up to date"),
-            std::string::npos)
-      << r.output;
-  for (const auto& [frame, mtime] : finished) {
-    EXPECT_EQ(std::filesystem::last_write_time(dir / "out" / final_image_name(Pass::image, frame)),
-              mtime)
-        << "frame " << frame << " was rendered again";
-  }
+  expect_rerun_redid_only_unfinished(r, dir / "out", finished, frames);
   for (int f = 1; f <= frames; ++f) {
     EXPECT_EQ(frame_file(dir / "out", f), frame_file(dir / "plain", f)) << "frame " << f;
-    EXPECT_TRUE(image_is_complete(dir / "out" / final_image_name(Pass::image, f), 64, 36)) << f;
   }
 }
 
