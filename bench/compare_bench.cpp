@@ -1,7 +1,8 @@
 // Benchmarks for compare/: metrics of two 1920×1080 frames (target well under 1 s), and a
-// folder of frames compared with 1 and 2 threads (reading PNGs included).
+// 100-frame folder compared with 1 and 2 threads (reading PNGs included).
 // Run briefly: build-*/bench/compare_bench --benchmark_min_time=0.2
 #include <benchmark/benchmark.h>
+#include <fmt/core.h>
 
 #include <cstdint>
 #include <filesystem>
@@ -52,13 +53,16 @@ void BM_HeatmapFullHd(benchmark::State& state) {
 BENCHMARK(BM_HeatmapFullHd)->Unit(benchmark::kMillisecond);
 
 // 8 frames of 640×360 PNG per side, written once.
+/// The case: a 100-frame folder, compared frame by frame (PNG reading included).
+constexpr int kFolderFrames = 100;
+
 const fs::path& frame_folders() {
   static const fs::path root = [] {
-    const fs::path dir = fs::temp_directory_path() / "raintrace_compare_bench";
+    const fs::path dir = fs::temp_directory_path() / "raintrace_compare_bench_100";
     for (const char* side : {"a", "b"}) {
       fs::create_directories(dir / side);
-      for (int i = 0; i < 8; ++i) {
-        const fs::path file = dir / side / ("frame_000" + std::to_string(i) + ".png");
+      for (int i = 0; i < kFolderFrames; ++i) {
+        const fs::path file = dir / side / fmt::format("frame_{:04d}.png", i);
         if (!fs::exists(file)) {
           raintrace::compare::write_image(
               file, noisy_frame(640, 360, std::uint32_t(i + (side[0] == 'b'))));
