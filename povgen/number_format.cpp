@@ -81,7 +81,8 @@ char* write_fixed(char* out, double value, double magnitude) {
     const int integer_begin = std::min(leading_zeros, 7 - decimals);
     store_8(out, text >> (8 * integer_begin));
     out += 8 - decimals - integer_begin;
-    fraction = text >> (8 * (8 - decimals));
+    // (With no decimals there is no fraction, and a shift by 64 bits would be undefined.)
+    if (decimals > 0) fraction = text >> (8 * (8 - decimals));
   }
   if (fraction_length > 0) {
     *out++ = '.';
