@@ -22,6 +22,19 @@ LocalRenderSettings settings(int jobs, int max_span = 12, bool force = false) {
   return s;
 }
 
+/// Every frame of the manifest in `dir` (there must be `frames`) is rendered from its current
+/// input into a complete image, and nothing is left at a temp name.
+void expect_every_frame_rendered(const std::filesystem::path& dir, std::size_t frames) {
+  const auto manifest = povgen::read_manifest(dir / "manifest.json");
+  ASSERT_EQ(manifest.frames.size(), frames);
+  for (const auto& f : manifest.frames) {
+    EXPECT_TRUE(image_is_complete(dir / f.image, 64, 36)) << f.image;
+    EXPECT_EQ(f.status, "rendered");
+    EXPECT_EQ(f.rendered_hash, f.input_hash);
+  }
+  EXPECT_TRUE(std::filesystem::is_empty(dir / "images/.tmp"));
+}
+
 class PovrayLocalRender : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -36,14 +49,7 @@ TEST_F(PovrayLocalRender, RendersEveryFrameToAValidImageAndRecordsItInTheManifes
   EXPECT_FALSE(summary.interrupted);
   EXPECT_TRUE(summary.failures.empty());
   EXPECT_EQ(summary.progress.done, 6);
-  const auto manifest = povgen::read_manifest(dir / "manifest.json");
-  for (const auto& f : manifest.frames) {
-    EXPECT_TRUE(image_is_complete(dir / f.image, 64, 36)) << f.image;
-    EXPECT_EQ(f.status, "rendered");
-    EXPECT_EQ(f.rendered_hash, f.input_hash);
-  }
-  // Nothing is left at a temp name.
-  EXPECT_TRUE(std::filesystem::is_empty(dir / "images/.tmp"));
+  expect_every_frame_rendered(dir, 6);
 }
 
 TEST_F(PovrayLocalRender, MaskOptionAlsoRendersMaskImagesFromMaskIni) {
@@ -183,14 +189,7 @@ TEST_F(PovrayLocalRender, FedFramesRenderBeforeTheLastFrameIsPublished) {
   EXPECT_EQ(summary.progress.total, 6);
   EXPECT_EQ(summary.progress.exported, 6);
   EXPECT_EQ(summary.progress.export_total, 6);
-  const auto manifest = povgen::read_manifest(dir / "manifest.json");
-  ASSERT_EQ(manifest.frames.size(), 6U);
-  for (const auto& f : manifest.frames) {
-    EXPECT_TRUE(image_is_complete(dir / f.image, 64, 36)) << f.image;
-    EXPECT_EQ(f.status, "rendered");
-    EXPECT_EQ(f.rendered_hash, f.input_hash);
-  }
-  EXPECT_TRUE(std::filesystem::is_empty(dir / "images/.tmp"));
+  expect_every_frame_rendered(dir, 6);
 }
 
 TEST_F(PovrayLocalRender, FedFramesThatAreUpToDateAreSkippedAndMasksFollow) {
