@@ -141,6 +141,7 @@ name = "field"
 [export]
 sphere_distance_m = 2.5
 min_streak_coverage = 0.125
+splash_keep = 0.75
 mask = true
 [simulation]
 substep_s = 0.001
@@ -205,6 +206,7 @@ ground_y_m = -0.5
   EXPECT_EQ(scene.look.environment.name, "field");
   EXPECT_EQ(scene.look.sphere_distance_m, 2.5);
   EXPECT_EQ(scene.look.min_streak_coverage, 0.125);
+  EXPECT_EQ(scene.look.splash_keep, 0.75);
   EXPECT_TRUE(scene.look.mask);
   EXPECT_EQ(scene.sim.substep_s, 0.001);
   EXPECT_EQ(scene.sim.prewarm_s, 4.0);
@@ -236,6 +238,8 @@ TEST(SceneErrors, OutOfRangeNumber) {
             "t.toml:2:21: export.sphere_distance_m: must be in [0, 1000], got -1.5");
   EXPECT_EQ(error_of("[export]\nmin_streak_coverage = 2\n"),
             "t.toml:2:23: export.min_streak_coverage: must be in [0, 1], got 2");
+  EXPECT_EQ(error_of("[export]\nsplash_keep = 0\n"),
+            "t.toml:2:15: export.splash_keep: must be in (0, 1], got 0");
 }
 
 TEST(SceneErrors, UnknownKeySuggestsTheClosest) {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <glm/geometric.hpp>
 
 #include "povgen/drop_shape.h"
@@ -32,6 +33,20 @@ float id_unit(std::uint64_t id) {
   z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
   z ^= z >> 31;
   return static_cast<float>(z >> 40) * 0x1.0p-24f;
+}
+
+/// A number in [0, 1) for a splash droplet that stays the same over its whole flight:
+/// droplets carry no id, but gravity only changes their vertical speed, so their horizontal
+/// velocity and size identify them from frame to frame.
+float droplet_unit(const glm::vec3& velocity, float diameter) {
+  auto bits = [](float f) {
+    std::uint32_t u = 0;
+    std::memcpy(&u, &f, sizeof u);
+    return static_cast<std::uint64_t>(u);
+  };
+  const std::uint64_t key =
+      bits(velocity.x) ^ (bits(velocity.z) << 32) ^ (bits(diameter) * 0x9e3779b97f4a7c15ull);
+  return id_unit(key);
 }
 
 /// Builds the quad of one far drop; false when it is culled or too faint to see.
@@ -143,13 +158,23 @@ void build_frame_values(const sim::Frame& frame, const ExportParams& look, Frame
   }
 
   const sim::SplashDroplets& splashes = frame.splashes;
+  const auto splash_keep = static_cast<float>(std::clamp(look.splash_keep, 1e-6, 1.0));
+  const bool has_velocity = splashes.velocity.size() == splashes.size();
+  // Survivors of the level of detail are drawn wider so the droplets cover the same area.
+  const float splash_widen = 1.0f / std::sqrt(splash_keep);
   for (std::size_t i = 0; i < splashes.size(); ++i) {
     const glm::vec3& p = splashes.position[i];
     const float opacity = i < splashes.opacity.size() ? splashes.opacity[i] : 1.0f;
     if (!(opacity > 0.0f)) continue;
+    if (splash_keep < 1.0f) {
+      const float key =
+          has_velocity ? droplet_unit(splashes.velocity[i], splashes.diameter[i]) : id_unit(i);
+      if (key >= splash_keep) continue;
+    }
     // Droplets are glints: never smaller than half a pixel, or POV-Ray without AA misses them.
     const float pixel = view.pixel_size(std::max(view.depth(p), 1e-3f), look.width);
-    const float radius = std::max(0.5f * splashes.diameter[i], 0.5f * pixel);
+    const float radius = std::max(0.5f * splashes.diameter[i], 0.5f * pixel) *
+                         (splash_keep < 1.0f ? splash_widen : 1.0f);
     if (!view.sphere_visible(p, radius)) continue;
     values.splashes.push_back({p, radius, 1.0f});
   }

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <glm/geometric.hpp>
 #include <limits>
 
@@ -104,7 +105,7 @@ TEST(FrameValues, SubPixelNearDropsBecomeStreaks) {
   sim::Frame frame;
   add_drop(frame, {0.0f, 1.6f, -3.0f}, {0.0f, -9.0f, 0.0f}, 1e-3f);
   ExportParams look = default_look();
-  look.min_streak_coverage = 0.0;  // its coverage 1/3.6 is below the default 0.5
+  look.min_streak_coverage = 0.0;  // its coverage 1/3.6 is below the default 1
   const FrameValues values = build_frame_values(frame, look);
   EXPECT_TRUE(values.drops.empty());
   EXPECT_EQ(values.streaks.size(), 1u);
@@ -215,6 +216,74 @@ TEST(FrameValues, ThinningKeepsTheSameDropsFromFrameToFrame) {
   // b lists the same drops in reverse: its last streak is a's first, moved down 5 cm.
   EXPECT_NEAR(b.streaks.back().corners[0].y, a.streaks.front().corners[0].y - 0.05f, 1e-5f);
   EXPECT_NEAR(b.streaks.back().corners[0].x, a.streaks.front().corners[0].x, 1e-5f);
+}
+
+/// 4000 splash droplets 1 mm across in front of the camera (depth 5 m, where a 640 px pixel is
+/// 9.02 mm), thrown sideways and up at speeds that differ from droplet to droplet.
+sim::Frame splashing(float fall_s = 0.0f) {
+  sim::Frame frame;
+  std::uint32_t state = 12345;
+  auto next = [&state] {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<float>(state >> 8) * 0x1.0p-24f;
+  };
+  for (int i = 0; i < 4000; ++i) {
+    glm::vec3 v{next() - 0.5f, 1.0f + next(), next() - 0.5f};
+    glm::vec3 p{-2.0f + 4.0f * next(), 0.5f + next(), 0.0f};
+    // Later in the flight: gravity has only changed the vertical speed.
+    p += fall_s * v;
+    v.y -= 9.81f * fall_s;
+    frame.splashes.position.push_back(p);
+    frame.splashes.velocity.push_back(v);
+    frame.splashes.diameter.push_back(1e-3f);
+    frame.splashes.opacity.push_back(1.0f);
+  }
+  return frame;
+}
+
+double covered_area(const std::vector<SphereValue>& droplets) {
+  double area = 0.0;
+  for (const SphereValue& d : droplets) area += 3.14159265 * d.radius * d.radius;
+  return area;
+}
+
+TEST(FrameValues, SplashDropletsAreThinnedAndWidenedToCoverTheSameArea) {
+  const sim::Frame frame = splashing();
+  ExportParams look = default_look();
+  look.splash_keep = 1.0;
+  const FrameValues all = build_frame_values(frame, look);
+  ASSERT_EQ(all.splashes.size(), 4000u);
+  // Below a pixel, a droplet is drawn half a pixel in radius: 4.51 mm at depth 5 m.
+  EXPECT_NEAR(all.splashes[0].radius, 4.51e-3f, 0.01e-3f);
+
+  look.splash_keep = 0.25;
+  const FrameValues kept = build_frame_values(frame, look);
+  // Binomial(4000, 0.25): 1000 expected, σ ≈ 27.
+  EXPECT_NEAR(static_cast<double>(kept.splashes.size()), 1000.0, 110.0);
+  for (const SphereValue& d : kept.splashes) EXPECT_NEAR(d.radius, 2.0f * 4.51e-3f, 0.02e-3f);
+  EXPECT_NEAR(covered_area(kept.splashes) / covered_area(all.splashes), 1.0, 0.11);
+}
+
+TEST(FrameValues, SplashThinningKeepsTheSameDropletsThroughTheirFlight) {
+  // 0.1 s later every droplet has moved and slowed vertically: the same ones must survive.
+  ExportParams look = default_look();
+  look.splash_keep = 0.5;
+  const FrameValues before = build_frame_values(splashing(), look);
+  const FrameValues after = build_frame_values(splashing(0.1f), look);
+  ASSERT_GT(before.splashes.size(), 1500u);
+  ASSERT_EQ(before.splashes.size(), after.splashes.size());
+  // Same droplets in the same order: the horizontal displacement is 0.1 s × its own velocity.
+  const sim::Frame start = splashing();
+  std::size_t matched = 0;
+  for (std::size_t i = 0, j = 0; i < start.splashes.size() && j < before.splashes.size(); ++i) {
+    if (glm::length(start.splashes.position[i] - before.splashes[j].centre) > 1e-6f) continue;
+    const glm::vec3 expected = start.splashes.position[i] + 0.1f * start.splashes.velocity[i];
+    EXPECT_NEAR(after.splashes[j].centre.x, expected.x, 1e-5f);
+    EXPECT_NEAR(after.splashes[j].centre.z, expected.z, 1e-5f);
+    ++matched;
+    ++j;
+  }
+  EXPECT_EQ(matched, before.splashes.size());
 }
 
 TEST(FrameValues, LightningLightSitsAtTheTopOfTheBrightestBolt) {

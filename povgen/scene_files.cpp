@@ -29,6 +29,7 @@ void check_params(const ExportParams& look) {
         "sphere_distance_m must be finite and >= 0");
   check(look.min_streak_coverage >= 0.0 && look.min_streak_coverage <= 1.0,
         "min_streak_coverage must be in [0, 1]");
+  check(look.splash_keep > 0.0 && look.splash_keep <= 1.0, "splash_keep must be in (0, 1]");
   check(std::isfinite(look.lightning_light) && look.lightning_light >= 0.0,
         "lightning_light must be finite and >= 0");
   check(std::isfinite(look.fog.depth_m) && look.fog.depth_m > 0.0,
