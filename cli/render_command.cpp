@@ -389,7 +389,8 @@ Command register_render_command(CLI::App& app) {
   sub->add_option("--height", args->height, "Image height in pixels (overrides the scene)")
       ->check(CLI::Range(16, 8192));
   sub->add_option("--quality", args->quality,
-                  "preview (no antialiasing) or final (adaptive antialiasing)")
+                  "preview (no antialiasing, cheaper environment effects: RT_Preview=1) or "
+                  "final (adaptive antialiasing, full effects)")
       ->check(CLI::IsMember({"preview", "final"}));
   sub->add_flag("--mask", args->mask, "Also render rain masks (images/mask_NNNN.png)");
   sub->add_flag("--force", args->force, "Re-render frames that are already up to date");

@@ -38,8 +38,12 @@ struct EnvironmentParams {
 };
 
 enum class Quality {
-  preview,  ///< no antialiasing, POV-Ray +Q5: quick looks and tests
-  final,    ///< adaptive antialiasing (method 1, no jitter), +Q9
+  /// No antialiasing, and scene.inc declares RT_Preview=1 so environments use cheaper
+  /// stand-ins (night_street: light sheets for media cones, no granite normal, no window
+  /// reflections): quick looks, tests and the throughput benchmark.
+  preview,
+  final,  ///< adaptive antialiasing (method 1, no jitter), RT_Preview=0: the full scene
+
 };
 
 struct ExportParams {

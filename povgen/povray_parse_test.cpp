@@ -1,6 +1,7 @@
 // End-to-end checks with the real POV-Ray (ctest label `povray`; skipped without povray):
-// every template and fog mode parses and renders, scene.ini names images frame_NNNN.png for a
-// sub-range, masks are rain on black, renders repeat across thread counts, mist deepens.
+// every template and fog mode parses and renders, preview differs from final only through
+// RT_Preview, scene.ini names images frame_NNNN.png for a sub-range, masks are rain on black,
+// renders repeat across thread counts, mist deepens.
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <algorithm>
@@ -118,6 +119,37 @@ TEST(PovRayTemplates, EveryEnvironmentAndFogModeRenders) {
     ASSERT_FALSE(px.empty()) << name;
     EXPECT_GT(spread(px), 0.1) << name << ": image is blank";
     fs::remove_all(dir);
+  }
+}
+
+TEST(PovRayTemplates, PreviewVariantsRenderAndFinalIsTheSameSceneWithRtPreviewZero) {
+  SKIP_WITHOUT_POVRAY();
+  // Same flags for both folders (no antialiasing), so only RT_Preview can tell them apart:
+  // night_street's preview stand-ins change the picture, and a preview folder rendered with
+  // Declare=RT_Preview=0 is the final scene pixel for pixel. Ground fog: the light sheets
+  // must not hide it.
+  for (const char* environment : {"night_street", "field", "closeup"}) {
+    ExportParams look = tiny_look();
+    look.environment.name = environment;
+    look.fog.mode = FogMode::ground;
+    const std::string name = std::string{"quality_"} + environment;
+    look.quality = Quality::preview;
+    const fs::path preview = make_folder(name + "_preview", look);
+    look.quality = Quality::final;
+    const fs::path final_dir = make_folder(name + "_final", look);
+    const std::string frame = "frames/frame_0001.pov +W48 +H27 +FN -A +L. +WT1 ";
+    ASSERT_EQ(run_povray(preview, frame + "+Oimages/p.png"), 0) << name << log_of(preview);
+    ASSERT_EQ(run_povray(preview, frame + "+Oimages/p0.png Declare=RT_Preview=0"), 0)
+        << name << log_of(preview);
+    ASSERT_EQ(run_povray(final_dir, frame + "+Oimages/f.png"), 0) << name << log_of(final_dir);
+    const auto p = read_rgb(preview / "images" / "p.png");
+    const auto f = read_rgb(final_dir / "images" / "f.png");
+    ASSERT_FALSE(p.empty()) << name;
+    EXPECT_GT(spread(p), 0.1) << name << ": preview image is blank";
+    EXPECT_EQ(read_rgb(preview / "images" / "p0.png"), f) << name;
+    if (std::string{environment} == "night_street") EXPECT_NE(p, f);
+    fs::remove_all(preview);
+    fs::remove_all(final_dir);
   }
 }
 

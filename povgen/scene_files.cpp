@@ -81,6 +81,11 @@ std::string scene_inc_text(const ExportParams& look) {
       "#ifndef(RT_Mask) #declare RT_Mask=0; #end\n"
       "#ifndef(RT_Flash) #declare RT_Flash=0; #end\n"
       "#ifndef(RT_FlashPosition) #declare RT_FlashPosition=<0,300,200>; #end\n";
+  // Environments (built-in or the user's) read RT_Preview to pick cheaper stand-ins for slow
+  // effects at quality "preview". Guarded like the others so `Declare=RT_Preview=0` on the
+  // command line renders an exported preview folder with the final look, and vice versa.
+  text += std::string{"#ifndef(RT_Preview) #declare RT_Preview="} +
+          (look.quality == Quality::preview ? "1" : "0") + "; #end\n";
   // Overlapping transparent streaks and refraction in drops each cost a trace level; too few
   // levels leave black specks where rain is dense.
   text += "global_settings{assumed_gamma 1.0 max_trace_level 32 adc_bailout 0.004}\n";

@@ -41,6 +41,25 @@ TEST(SceneFiles, QualityPicksAntialiasing) {
   EXPECT_TRUE(contains(ini_text(look, 1, "mask", "mask.pov"), "\nAntialias=off\n"));
 }
 
+TEST(SceneFiles, SceneIncDeclaresRtPreviewPerQuality) {
+  // Environments test RT_Preview for their cheap stand-ins; guarded so a command-line
+  // Declare=RT_Preview=… wins, and declared before the environment is included.
+  ExportParams look;
+  look.quality = Quality::preview;
+  const std::string preview = scene_inc_text(look);
+  EXPECT_TRUE(contains(preview, "\n#ifndef(RT_Preview) #declare RT_Preview=1; #end\n"));
+  EXPECT_LT(preview.find("RT_Preview"), preview.find("#include \"environment.inc\""));
+  look.quality = Quality::final;
+  const std::string final_inc = scene_inc_text(look);
+  EXPECT_TRUE(contains(final_inc, "\n#ifndef(RT_Preview) #declare RT_Preview=0; #end\n"));
+  // Nothing else in scene.inc depends on the quality.
+  const std::string line1 = "#ifndef(RT_Preview) #declare RT_Preview=1; #end\n";
+  const std::string line0 = "#ifndef(RT_Preview) #declare RT_Preview=0; #end\n";
+  std::string same = preview;
+  same.replace(same.find(line1), line1.size(), line0);
+  EXPECT_EQ(same, final_inc);
+}
+
 TEST(SceneFiles, DispatcherIncludesTheFrameByNumber) {
   EXPECT_EQ(dispatcher_text("frame", 4).substr(dispatcher_text("frame", 4).find("#version")),
             "#version 3.7;\n#include concat(\"frames/frame_\", str(frame_number, -4, 0), "
