@@ -10,10 +10,10 @@
 #include <memory>
 #include <stdexcept>
 #include <string_view>
-#include <thread>
 #include <vector>
 
 #include "povgen/number_format.h"
+#include "povgen/ordered_chunks.h"
 
 namespace raintrace::povgen {
 namespace {
@@ -90,9 +90,10 @@ class Writer {
 };
 
 /// Sends text to the sink in order. Small pieces are gathered; large sections are cut into
-/// chunks that worker threads fill in rounds, each into its own reused buffer, and the
-/// buffers go to the sink in chunk order. Chunk boundaries depend only on the item count,
-/// never on the thread count, and each item's text only on the item: identical bytes always.
+/// chunks that worker threads fill, each into its own reused buffer, and the buffers go to
+/// the sink in chunk order (from whichever worker filled them, one call at a time). Chunk
+/// boundaries depend only on the item count, never on the thread count, and each item's text only
+/// on the item: identical bytes always.
 class Emitter {
  public:
   Emitter(const TextSink& sink, int threads)
@@ -111,44 +112,17 @@ class Emitter {
     m_pending.clear();
   }
 
-  /// write(begin, end, buffer) writes items [begin, end) into buffer.
+  /// write(begin, end, buffer) writes items [begin, end) into buffer. Each worker thread
+  /// fills its own buffer, and hands it to the sink in chunk order (ordered_chunks).
   template <typename Write>
   void chunks(std::size_t count, const Write& write) {
     flush();
-    const std::size_t chunk_count = (count + kChunk - 1) / kChunk;
-    for (std::size_t round = 0; round < chunk_count; round += m_workers) {
-      const std::size_t in_round = std::min(m_workers, chunk_count - round);
-      auto fill = [&](std::size_t w) {
-        const std::size_t c = round + w;
-        m_buffers[w].clear();
-        write(c * kChunk, std::min(count, (c + 1) * kChunk), m_buffers[w]);
-      };
-      if (in_round == 1) {
-        fill(0);
-      } else {
-        std::vector<std::thread> pool;
-        std::vector<std::exception_ptr> errors(in_round);
-        for (std::size_t w = 1; w < in_round; ++w) {
-          pool.emplace_back([&, w] {
-            try {
-              fill(w);
-            } catch (...) {
-              errors[w] = std::current_exception();
-            }
-          });
-        }
-        try {
-          fill(0);
-        } catch (...) {
-          errors[0] = std::current_exception();
-        }
-        for (auto& t : pool) t.join();
-        for (auto& e : errors) {
-          if (e) std::rethrow_exception(e);
-        }
-      }
-      for (std::size_t w = 0; w < in_round; ++w) m_sink(m_buffers[w].view());
-    }
+    ordered_chunks((count + kChunk - 1) / kChunk, static_cast<int>(m_workers),
+                   [&](std::size_t c, std::size_t w) {
+                     m_buffers[w].clear();
+                     write(c * kChunk, std::min(count, (c + 1) * kChunk), m_buffers[w]);
+                   },
+                   [&](std::size_t, std::size_t w) { m_sink(m_buffers[w].view()); });
   }
 
  private:
