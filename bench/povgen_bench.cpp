@@ -41,6 +41,19 @@ void BM_FrameValues(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
+/// Values alone on 1 and 2 threads (chunks of drops in parallel).
+void BM_FrameValuesThreads(benchmark::State& state) {
+  const sim::Frame& frame = rain(static_cast<std::size_t>(state.range(0)));
+  const povgen::ExportParams look = every_streak();
+  const int threads = static_cast<int>(state.range(1));
+  povgen::FrameValues values;
+  for (auto _ : state) {
+    povgen::build_frame_values(frame, look, values, {}, threads);
+    benchmark::DoNotOptimize(values.streaks.data());
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
 void BM_FrameText(benchmark::State& state) {
   const sim::Frame& frame = rain(static_cast<std::size_t>(state.range(0)));
   const povgen::FrameValues values = povgen::build_frame_values(frame, every_streak());
@@ -56,7 +69,8 @@ void BM_FrameText(benchmark::State& state) {
   state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(bytes));
 }
 
-/// The whole pure path of one frame: values then text, as export_scene runs it.
+/// The whole pure path of one frame: values then text, both on `threads` threads, as
+/// export_scene runs it.
 void BM_DropsWritten(benchmark::State& state) {
   const sim::Frame& frame = rain(static_cast<std::size_t>(state.range(0)));
   const povgen::ExportParams look = every_streak();
@@ -65,7 +79,7 @@ void BM_DropsWritten(benchmark::State& state) {
   std::size_t bytes = 0;
   const povgen::TextSink sink = [&bytes](std::string_view piece) { bytes += piece.size(); };
   for (auto _ : state) {
-    povgen::build_frame_values(frame, look, values);
+    povgen::build_frame_values(frame, look, values, {}, threads);
     povgen::write_frame_text(values, sink, {}, threads);
   }
   benchmark::DoNotOptimize(bytes);
@@ -73,6 +87,10 @@ void BM_DropsWritten(benchmark::State& state) {
 }
 
 BENCHMARK(BM_FrameValues)->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FrameValuesThreads)
+    ->ArgsProduct({{10'000, 100'000, 1'000'000}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK(BM_FrameText)
     ->ArgsProduct({{10'000, 100'000, 1'000'000}, {1, 2}})
     ->Unit(benchmark::kMillisecond)
