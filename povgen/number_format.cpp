@@ -2,7 +2,8 @@
 // coordinate and radius raintrace writes) is rounded to an integer of at most 8 digits, written
 // as 8 zero-padded digits with a two-digit table, and the point goes in between; everything
 // else goes through std::to_chars. Text is written a word at a time and trimmed afterwards, so
-// the hot path has no division loops and few data-dependent branches.
+// the hot path has no division loops and few data-dependent branches. write_fixed5() and
+// write_index() are inline in the header; only their rare cases live here.
 #include "povgen/number_format.h"
 
 #include <array>
