@@ -133,22 +133,28 @@ void add_drops(const DropContext& ctx, std::size_t begin, std::size_t end,
 constexpr std::size_t kDropChunk = 4096;
 
 /// add_drops() for all drops into values, on up to `threads` threads: each chunk fills its
-/// worker's own vectors, appended to values in chunk order, so the values are the same for
-/// every thread count.
+/// worker's own vectors; in chunk order, its spheres are appended and its streaks given their
+/// place, and then copied there in parallel. The values are the same for every thread count.
 void add_drops_in_chunks(const DropContext& ctx, FrameValues& values, int threads) {
   const std::size_t count = ctx.drops.size();
-  values.streaks.reserve(count);
   const std::size_t chunks = (count + kDropChunk - 1) / kDropChunk;
   if (threads <= 1 || chunks <= 1) {
+    values.streaks.clear();
+    values.streaks.reserve(count);
     add_drops(ctx, 0, count, values.drops, values.streaks);
     return;
   }
+  // Room for every drop as a streak; trimmed below. Not cleared first: resize then only
+  // zero-fills what the previous frame did not use, not 50 MB per frame.
+  values.streaks.resize(count);
   struct Scratch {
     std::vector<SphereValue> spheres;
     std::vector<StreakValue> streaks;
+    std::size_t offset = 0;  ///< where this chunk's streaks go in values.streaks
   };
   // One per worker: ordered_chunks() runs at most 64.
   std::vector<Scratch> scratch(static_cast<std::size_t>(std::min(threads, 64)));
+  std::size_t streak_count = 0;
   ordered_chunks(
       chunks, threads,
       [&](std::size_t c, std::size_t w) {
@@ -160,10 +166,17 @@ void add_drops_in_chunks(const DropContext& ctx, FrameValues& values, int thread
                   mine.streaks);
       },
       [&](std::size_t, std::size_t w) {
-        const Scratch& mine = scratch[w];
+        Scratch& mine = scratch[w];
         values.drops.insert(values.drops.end(), mine.spheres.begin(), mine.spheres.end());
-        values.streaks.insert(values.streaks.end(), mine.streaks.begin(), mine.streaks.end());
+        mine.offset = streak_count;
+        streak_count += mine.streaks.size();
+      },
+      [&](std::size_t, std::size_t w) {
+        const Scratch& mine = scratch[w];
+        std::copy(mine.streaks.begin(), mine.streaks.end(),
+                  values.streaks.begin() + static_cast<std::ptrdiff_t>(mine.offset));
       });
+  values.streaks.resize(streak_count);
 }
 
 glm::vec3 default_flash_position(const ViewFrustum& view) {
@@ -184,8 +197,7 @@ void build_frame_values(const sim::Frame& frame, const ExportParams& look, Frame
                         const StreakAtlasLayout& atlas, int threads) {
   const ViewFrustum view(look.camera, static_cast<double>(look.width) / look.height);
   values.index = frame.index;
-  values.drops.clear();
-  values.streaks.clear();
+  values.drops.clear();  // (streaks: add_drops_in_chunks)
   values.splashes.clear();
   values.bolts.clear();
 

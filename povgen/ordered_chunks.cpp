@@ -7,18 +7,20 @@
 #include <algorithm>
 #include <atomic>
 #include <exception>
+#include <mutex>
 #include <thread>
 #include <vector>
 
 namespace raintrace::povgen {
 
-void ordered_chunks(std::size_t chunks, int threads, const ChunkStep& fill,
-                    const ChunkStep& commit) {
+void ordered_chunks(std::size_t chunks, int threads, const ChunkStep& fill, const ChunkStep& commit,
+                    const ChunkStep& finish) {
   const auto workers = std::min(static_cast<std::size_t>(std::clamp(threads, 1, 64)), chunks);
   if (workers <= 1) {
     for (std::size_t c = 0; c < chunks; ++c) {
       fill(c, 0);
       commit(c, 0);
+      if (finish) finish(c, 0);
     }
     return;
   }
@@ -26,6 +28,8 @@ void ordered_chunks(std::size_t chunks, int threads, const ChunkStep& fill,
   std::atomic<std::size_t> turn{0};  // the chunk whose commit may run now
   std::atomic<bool> failed{false};
   std::exception_ptr error;  // written only by the thread whose turn it is
+  std::mutex finish_error_mutex;
+  std::exception_ptr finish_error;  // from finish(), which runs outside the turns
   auto run = [&](std::size_t worker) {
     for (std::size_t c = next.fetch_add(1); c < chunks; c = next.fetch_add(1)) {
       std::exception_ptr mine;
@@ -48,12 +52,23 @@ void ordered_chunks(std::size_t chunks, int threads, const ChunkStep& fill,
           mine = std::current_exception();
         }
       }
+      const bool committed = !mine && !failed.load(std::memory_order_relaxed);
       if (mine && !error) {
         error = mine;
         failed.store(true, std::memory_order_relaxed);
       }
       turn.store(c + 1, std::memory_order_release);
       turn.notify_all();
+      if (committed && finish) {
+        try {
+          finish(c, worker);
+        } catch (...) {
+          // Outside the turns there is no chunk order to keep: the first one seen wins.
+          failed.store(true, std::memory_order_relaxed);
+          std::lock_guard lock(finish_error_mutex);
+          if (!finish_error) finish_error = std::current_exception();
+        }
+      }
     }
   };
   {
@@ -64,6 +79,7 @@ void ordered_chunks(std::size_t chunks, int threads, const ChunkStep& fill,
     run(0);
   }
   if (error) std::rethrow_exception(error);
+  if (finish_error) std::rethrow_exception(finish_error);
 }
 
 }  // namespace raintrace::povgen

@@ -17,10 +17,13 @@ using ChunkStep = std::function<void(std::size_t chunk, std::size_t worker)>;
 /// the same thread with the same worker index. Fills run in parallel; commits run one at a
 /// time in ascending chunk order, and each sees everything earlier commits wrote. A worker
 /// starts its next chunk only after committing the last, so its scratch is never
-/// overwritten before it is used. Threads live for this call only: one start per call, not
-/// per chunk. If a fill or commit throws, later chunks are skipped and the first exception in
-/// chunk order is rethrown once all threads have stopped.
-void ordered_chunks(std::size_t chunks, int threads, const ChunkStep& fill,
-                    const ChunkStep& commit);
+/// overwritten before it is used. If `finish` is given, finish(c, w) runs right after
+/// commit(c, w) on the same thread but outside the turn, in parallel with other chunks: the
+/// place for work that needs what commit decided (an offset) but not the order. Threads live
+/// for this call only: one start per call, not per chunk. If a step throws, later chunks are
+/// skipped and, once all threads have stopped, the first exception from a fill or commit in
+/// chunk order is rethrown (else the first one from a finish).
+void ordered_chunks(std::size_t chunks, int threads, const ChunkStep& fill, const ChunkStep& commit,
+                    const ChunkStep& finish = {});
 
 }  // namespace raintrace::povgen

@@ -29,6 +29,30 @@ TEST(OrderedChunks, CommitsInChunkOrderWhateverTheThreadCount) {
   }
 }
 
+TEST(OrderedChunks, FinishSeesWhatCommitDecided) {
+  // commit hands out offsets in chunk order; finish writes chunk c's c+1 values there, in
+  // parallel: the result is the sequence 0, 1, 1, 2, 2, 2, ... whatever the thread count.
+  for (const int threads : {1, 2, 3}) {
+    const std::size_t chunks = 60;
+    std::vector<std::size_t> out(chunks * (chunks + 1) / 2);
+    std::vector<std::size_t> offset(static_cast<std::size_t>(threads));
+    std::size_t next = 0;
+    ordered_chunks(
+        chunks, threads, [](std::size_t, std::size_t) {},
+        [&](std::size_t c, std::size_t w) {
+          offset[w] = next;
+          next += c + 1;
+        },
+        [&](std::size_t c, std::size_t w) {
+          for (std::size_t i = 0; i <= c; ++i) out[offset[w] + i] = c;
+        });
+    std::size_t i = 0;
+    for (std::size_t c = 0; c < chunks; ++c) {
+      for (std::size_t k = 0; k <= c; ++k, ++i) ASSERT_EQ(out[i], c) << threads << " threads";
+    }
+  }
+}
+
 TEST(OrderedChunks, NoChunksRunsNothing) {
   EXPECT_EQ(joined(0, 4), "");
   EXPECT_EQ(joined(1, 4), "<0>");
