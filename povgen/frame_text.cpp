@@ -204,32 +204,44 @@ void write_triangle_pairs(Writer& w, std::uint64_t v) {
   w.put(">,\n");
 }
 
-/// write_triangle_pairs(w, 4 * i) for a million quads: v = 4i ends in 0, 2, 4, 6 or 8, and
-/// unless it ends in 8 the texts of v+1..v+3 are v's with the last digit raised, so one digit
-/// conversion serves all four numbers.
+/// The text of v < 10^8 in the low bytes of a word, and its length.
+struct IndexText {
+  std::uint64_t text;
+  int length;
+  /// The text of v + k for k ≤ 9 − (v's last digit): only the last character changes.
+  [[nodiscard]] std::uint64_t plus(std::uint64_t k) const {
+    return text + (k << (8 * (length - 1)));
+  }
+};
+
+IndexText index_text(std::uint64_t v) {
+  const std::uint64_t digits = detail::eight_digits(static_cast<std::uint32_t>(v));
+  const int leading_zeros = std::countr_zero(digits | (1ULL << 56)) / 8;  // "0" keeps a digit
+  return {(digits + detail::kZeroChars) >> (8 * leading_zeros), 8 - leading_zeros};
+}
+
+/// write_triangle_pairs(w, 4 * quad) for a million quads with two digit conversions instead of
+/// six: v = 4·quad and v + 2 are even, so v + 1 and v + 3 never carry into another digit.
 void write_face_pairs(Writer& w, std::uint64_t quad) {
   const std::uint64_t v = 4 * quad;
-  if (v % 10 == 8 || v >= detail::kEightDigits) {
+  if (v + 3 >= detail::kEightDigits) {
     write_triangle_pairs(w, v);
     return;
   }
-  const std::uint64_t digits = detail::eight_digits(static_cast<std::uint32_t>(v));
-  const int leading_zeros = std::countr_zero(digits | (1ULL << 56)) / 8;
-  const int length = 8 - leading_zeros;
-  const std::uint64_t text = (digits + detail::kZeroChars) >> (8 * leading_zeros);
-  const std::uint64_t one = 1ULL << (8 * (length - 1));  // +1 on the last digit
+  const IndexText a = index_text(v);
+  const IndexText c = index_text(v + 2);
   w.put('<');
-  w.put_word(text, length);
+  w.put_word(a.text, a.length);
   w.put(',');
-  w.put_word(text + one, length);
+  w.put_word(a.plus(1), a.length);
   w.put(',');
-  w.put_word(text + 2 * one, length);
+  w.put_word(c.text, c.length);
   w.put(">,<");
-  w.put_word(text, length);
+  w.put_word(a.text, a.length);
   w.put(',');
-  w.put_word(text + 2 * one, length);
+  w.put_word(c.text, c.length);
   w.put(',');
-  w.put_word(text + 3 * one, length);
+  w.put_word(c.plus(1), c.length);
   w.put(">,\n");
 }
 
