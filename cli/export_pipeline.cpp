@@ -101,7 +101,7 @@ void export_scene(const Scene& scene, const FrameRange& range, const std::filesy
     if (n < range.first) continue;
     const sim::Frame frame = world.snapshot(n);
     const std::string name = povgen::frame_file_name("frame", n, digits, ".pov");
-    povgen::build_frame_values(frame, look, values);
+    povgen::build_frame_values(frame, look, values, povgen::StreakAtlasLayout{}, threads);
     povgen::FrameEntry entry;
     entry.number = n;
     entry.scene = "frames/" + name;

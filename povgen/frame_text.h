@@ -17,7 +17,8 @@ namespace raintrace::povgen {
 using TextSink = std::function<void(std::string_view)>;
 
 /// Streams the frame scene to sink in pieces of at most a few MB, so a million-drop frame
-/// never sits in memory whole. Same bytes as frame_text().
+/// never sits in memory whole. Same bytes as frame_text(). With threads > 1 the sink may be
+/// called from a writer thread, but always one call at a time and in text order.
 void write_frame_text(const FrameValues& values, const TextSink& sink,
                       const StreakAtlasLayout& atlas = {}, int threads = 1);
 

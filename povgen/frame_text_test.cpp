@@ -98,6 +98,39 @@ TEST(FrameText, SecondStreakUsesItsCellsUvQuad) {
   EXPECT_NE(text.find("uv_vectors{256,"), std::string::npos);
 }
 
+TEST(FrameText, FaceAndUvIndicesCountUpAcrossDigitCarries) {
+  // 3000 quads: vertex indices up to 11999, through every digit count and every carry
+  // (4i + 2 rolls over when 4i ends in 8); cells cycle through the default 64.
+  FrameValues values;
+  std::string faces = "face_indices{6000,\n";
+  std::string uvs = "uv_indices{6000,\n";
+  auto pair = [](std::size_t v) {
+    const auto n = [](std::size_t x) { return std::to_string(x); };
+    return "<" + n(v) + "," + n(v + 1) + "," + n(v + 2) + ">,<" + n(v) + "," + n(v + 2) + "," +
+           n(v + 3) + ">,\n";
+  };
+  for (std::size_t i = 0; i < 3000; ++i) {
+    StreakValue s;
+    s.corners = {glm::vec3{0.0f}, glm::vec3{1.0f}, glm::vec3{2.0f}, glm::vec3{3.0f}};
+    s.cell = static_cast<int>(i * 7 % 64);
+    values.streaks.push_back(s);
+    faces += pair(4 * i);
+    uvs += pair(4 * static_cast<std::size_t>(s.cell));
+  }
+  const std::string text = frame_text(values);
+  EXPECT_NE(text.find(faces + "}\n"), std::string::npos);
+  EXPECT_NE(text.find(uvs + "}\n"), std::string::npos);
+}
+
+TEST(FrameText, StreakCellOutsideTheAtlasIsRefused) {
+  FrameValues values;
+  StreakValue s;
+  s.corners = {glm::vec3{0.0f}, glm::vec3{1.0f}, glm::vec3{2.0f}, glm::vec3{3.0f}};
+  s.cell = 1;
+  values.streaks.push_back(s);
+  EXPECT_THROW(frame_text(values, one_cell()), std::invalid_argument);
+}
+
 TEST(FrameText, SameFrameGivesIdenticalBytesWhateverTheThreadCount) {
   ExportParams look;
   look.min_streak_coverage = 0.0;  // every drop a streak: several chunks
@@ -115,6 +148,11 @@ TEST(FrameText, NonFiniteValuesAreRefused) {
   values.drops.push_back({{std::numeric_limits<float>::quiet_NaN(), 0.0f, 0.0f}, 0.001f, 1.0f});
   EXPECT_THROW(frame_text(values), std::invalid_argument);
   EXPECT_THROW(frame_text(values, {}, 2), std::invalid_argument);
+  FrameValues streak;
+  streak.streaks.push_back({{glm::vec3{0.0f}, glm::vec3{std::numeric_limits<float>::infinity()},
+                             glm::vec3{1.0f}, glm::vec3{1.0f}},
+                            0});
+  EXPECT_THROW(frame_text(streak), std::invalid_argument);
   FrameValues flash;
   flash.flash = std::numeric_limits<float>::infinity();
   EXPECT_THROW(frame_text(flash), std::invalid_argument);

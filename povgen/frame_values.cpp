@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "povgen/drop_shape.h"
+#include "povgen/ordered_chunks.h"
 #include "povgen/view_frustum.h"
 
 namespace raintrace::povgen {
@@ -100,6 +101,99 @@ bool make_streak(const StreakContext& ctx, std::uint64_t id, const glm::vec3& po
   return true;
 }
 
+struct DropContext {
+  const StreakContext& streaks;
+  const sim::Drops& drops;
+  float split;  ///< m: nearer drops may be spheres
+};
+
+/// Near drops → spheres, far drops → streaks, for drops [begin, end), appended in drop order.
+void add_drops(const DropContext& ctx, std::size_t begin, std::size_t end,
+               std::vector<SphereValue>& spheres, std::vector<StreakValue>& streaks) {
+  const ViewFrustum& view = ctx.streaks.view;
+  const sim::Drops& drops = ctx.drops;
+  const std::size_t count = drops.size();
+  const bool has_acceleration = drops.acceleration.size() == count;
+  const bool has_opacity = drops.opacity.size() == count;
+  for (std::size_t i = begin; i < end; ++i) {
+    const glm::vec3& p = drops.position[i];
+    const float diameter = drops.diameter[i];
+    const float opacity = has_opacity ? drops.opacity[i] : 1.0f;
+    if (!(opacity > 0.0f) || !(diameter > 0.0f)) continue;
+    // Near drops are refractive spheres, but only once they cover a pixel: a sub-pixel sphere
+    // is hit by a ray or missed entirely, which speckles the image, and a drop that small
+    // shows as its motion streak anyway.
+    if (glm::length(p - view.eye()) < ctx.split &&
+        diameter >= view.pixel_size(std::max(view.depth(p), 1e-3f), ctx.streaks.width_px)) {
+      const float radius = 0.5f * diameter;
+      if (!view.sphere_visible(p, radius)) continue;
+      const auto ratio = static_cast<float>(drop_axis_ratio(diameter));
+      // Equal volume: the horizontal radius grows as the drop flattens, a = R·ratio^(-1/3).
+      const float equatorial = radius / std::cbrt(ratio);
+      spheres.push_back({p, equatorial, ratio < kRoundEnough ? ratio : 1.0f});
+      continue;
+    }
+    StreakValue streak;
+    const glm::vec3 acceleration = has_acceleration ? drops.acceleration[i] : glm::vec3{0.0f};
+    const std::uint64_t id = i < drops.id.size() ? drops.id[i] : i;
+    if (make_streak(ctx.streaks, id, p, drops.velocity[i], acceleration, diameter, opacity,
+                    streak)) {
+      streaks.push_back(streak);
+    }
+  }
+}
+
+/// Drops per chunk of the parallel loop: its spheres and streaks (~200 KB) stay in cache
+/// until they are appended. Boundaries depend only on the drop count.
+constexpr std::size_t kDropChunk = 4096;
+
+/// add_drops() for all drops into values, on up to `threads` threads: each chunk fills its
+/// worker's own vectors; in chunk order, its spheres are appended and its streaks given their
+/// place, and then copied there in parallel. The values are the same for every thread count.
+void add_drops_in_chunks(const DropContext& ctx, FrameValues& values, int threads) {
+  const std::size_t count = ctx.drops.size();
+  const std::size_t chunks = (count + kDropChunk - 1) / kDropChunk;
+  if (threads <= 1 || chunks <= 1) {
+    values.streaks.clear();
+    values.streaks.reserve(count);
+    add_drops(ctx, 0, count, values.drops, values.streaks);
+    return;
+  }
+  // Room for every drop as a streak; trimmed below. Not cleared first: resize then only
+  // zero-fills what the previous frame did not use, not 50 MB per frame.
+  values.streaks.resize(count);
+  struct Scratch {
+    std::vector<SphereValue> spheres;
+    std::vector<StreakValue> streaks;
+    std::size_t offset = 0;  ///< where this chunk's streaks go in values.streaks
+  };
+  // One per worker: ordered_chunks() runs at most 64.
+  std::vector<Scratch> scratch(static_cast<std::size_t>(std::min(threads, 64)));
+  std::size_t streak_count = 0;
+  ordered_chunks(
+      chunks, threads,
+      [&](std::size_t c, std::size_t w) {
+        Scratch& mine = scratch[w];
+        mine.spheres.clear();
+        mine.streaks.clear();
+        mine.streaks.reserve(kDropChunk);
+        add_drops(ctx, c * kDropChunk, std::min(count, (c + 1) * kDropChunk), mine.spheres,
+                  mine.streaks);
+      },
+      [&](std::size_t, std::size_t w) {
+        Scratch& mine = scratch[w];
+        values.drops.insert(values.drops.end(), mine.spheres.begin(), mine.spheres.end());
+        mine.offset = streak_count;
+        streak_count += mine.streaks.size();
+      },
+      [&](std::size_t, std::size_t w) {
+        const Scratch& mine = scratch[w];
+        std::copy(mine.streaks.begin(), mine.streaks.end(),
+                  values.streaks.begin() + static_cast<std::ptrdiff_t>(mine.offset));
+      });
+  values.streaks.resize(streak_count);
+}
+
 glm::vec3 default_flash_position(const ViewFrustum& view) {
   // Sheet lightning from behind the clouds, high and ahead of the camera.
   return view.eye() + view.forward() * 200.0f + glm::vec3{0.0f, 300.0f, 0.0f};
@@ -108,54 +202,24 @@ glm::vec3 default_flash_position(const ViewFrustum& view) {
 }  // namespace
 
 FrameValues build_frame_values(const sim::Frame& frame, const ExportParams& look,
-                               const StreakAtlasLayout& atlas) {
+                               const StreakAtlasLayout& atlas, int threads) {
   FrameValues values;
-  build_frame_values(frame, look, values, atlas);
+  build_frame_values(frame, look, values, atlas, threads);
   return values;
 }
 
 void build_frame_values(const sim::Frame& frame, const ExportParams& look, FrameValues& values,
-                        const StreakAtlasLayout& atlas) {
+                        const StreakAtlasLayout& atlas, int threads) {
   const ViewFrustum view(look.camera, static_cast<double>(look.width) / look.height);
   values.index = frame.index;
-  values.drops.clear();
-  values.streaks.clear();
+  values.drops.clear();  // (streaks: add_drops_in_chunks)
   values.splashes.clear();
   values.bolts.clear();
 
-  const auto split = static_cast<float>(look.sphere_distance_m);
   const StreakContext ctx{view, atlas, static_cast<float>(look.camera.exposure_s), look.width,
                           static_cast<float>(std::clamp(look.min_streak_coverage, 0.0, 1.0))};
-  const sim::Drops& drops = frame.drops;
-  const std::size_t count = drops.size();
-  const bool has_acceleration = drops.acceleration.size() == count;
-  const bool has_opacity = drops.opacity.size() == count;
-  values.streaks.reserve(count);
-  for (std::size_t i = 0; i < count; ++i) {
-    const glm::vec3& p = drops.position[i];
-    const float diameter = drops.diameter[i];
-    const float opacity = has_opacity ? drops.opacity[i] : 1.0f;
-    if (!(opacity > 0.0f) || !(diameter > 0.0f)) continue;
-    // Near drops are refractive spheres, but only once they cover a pixel: a sub-pixel sphere
-    // is hit by a ray or missed entirely, which speckles the image, and a drop that small
-    // shows as its motion streak anyway.
-    if (glm::length(p - view.eye()) < split &&
-        diameter >= view.pixel_size(std::max(view.depth(p), 1e-3f), look.width)) {
-      const float radius = 0.5f * diameter;
-      if (!view.sphere_visible(p, radius)) continue;
-      const auto ratio = static_cast<float>(drop_axis_ratio(diameter));
-      // Equal volume: the horizontal radius grows as the drop flattens, a = R·ratio^(-1/3).
-      const float equatorial = radius / std::cbrt(ratio);
-      values.drops.push_back({p, equatorial, ratio < kRoundEnough ? ratio : 1.0f});
-      continue;
-    }
-    StreakValue streak;
-    const glm::vec3 acceleration = has_acceleration ? drops.acceleration[i] : glm::vec3{0.0f};
-    const std::uint64_t id = i < drops.id.size() ? drops.id[i] : i;
-    if (make_streak(ctx, id, p, drops.velocity[i], acceleration, diameter, opacity, streak)) {
-      values.streaks.push_back(streak);
-    }
-  }
+  const DropContext drops{ctx, frame.drops, static_cast<float>(look.sphere_distance_m)};
+  add_drops_in_chunks(drops, values, threads);
 
   const sim::SplashDroplets& splashes = frame.splashes;
   const auto splash_keep = static_cast<float>(std::clamp(look.splash_keep, 1e-6, 1.0));

@@ -55,12 +55,14 @@ struct FrameValues {
 /// look.min_streak_coverage are thinned out by drop id and the survivors drawn at that
 /// coverage (same expected light, fewer quads). Throws
 /// std::invalid_argument if the camera is degenerate or a value is not finite.
+/// `threads` > 1 builds chunks of drops in parallel; the values are identical for every
+/// thread count.
 FrameValues build_frame_values(const sim::Frame& frame, const ExportParams& look,
-                               const StreakAtlasLayout& atlas = {});
+                               const StreakAtlasLayout& atlas = {}, int threads = 1);
 
 /// Same, into `values`, reusing its vectors' memory: a sequence of million-drop frames then
 /// stops paying for fresh pages every frame.
 void build_frame_values(const sim::Frame& frame, const ExportParams& look, FrameValues& values,
-                        const StreakAtlasLayout& atlas = {});
+                        const StreakAtlasLayout& atlas = {}, int threads = 1);
 
 }  // namespace raintrace::povgen

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "povgen/drop_shape.h"
+#include "povgen/synthetic_rain.h"
 #include "povgen/view_frustum.h"
 
 namespace raintrace::povgen {
@@ -301,6 +302,41 @@ TEST(FrameValues, LightningLightSitsAtTheTopOfTheBrightestBolt) {
   // The upper segment is above the view (y 150..300 at depth 205 m, half height ≈ 66.6 m):
   // culled; the lower one crosses the view and stays.
   EXPECT_EQ(values.bolts[0].segments.size(), 1u);
+}
+
+/// Number of places where a and b differ (sizes, then every field of every element).
+std::size_t differences(const FrameValues& a, const FrameValues& b) {
+  std::size_t n = (a.drops.size() != b.drops.size()) + (a.streaks.size() != b.streaks.size()) +
+                  (a.splashes.size() != b.splashes.size());
+  for (std::size_t i = 0; i < std::min(a.drops.size(), b.drops.size()); ++i) {
+    n += a.drops[i].centre != b.drops[i].centre || a.drops[i].radius != b.drops[i].radius ||
+         a.drops[i].axis_ratio != b.drops[i].axis_ratio;
+  }
+  for (std::size_t i = 0; i < std::min(a.streaks.size(), b.streaks.size()); ++i) {
+    n += a.streaks[i].corners != b.streaks[i].corners || a.streaks[i].cell != b.streaks[i].cell;
+  }
+  return n;
+}
+
+TEST(FrameValues, SameFrameGivesIdenticalValuesWhateverTheThreadCount) {
+  // 3 m sphere distance at 1920 px: near drops become spheres, so both vectors are appended
+  // chunk by chunk (chunks of 4096 drops: 15 chunks, the last one partial).
+  ExportParams look = default_look();
+  look.min_streak_coverage = 0.0;
+  look.sphere_distance_m = 3.0;
+  look.width = 1920;
+  look.height = 1080;
+  const sim::Frame frame = synthetic_rain(60000, look.camera, 16.0 / 9.0, 12.0, 2.0, 3);
+  const FrameValues one = build_frame_values(frame, look, {}, 1);
+  ASSERT_GT(one.drops.size(), 100u);
+  ASSERT_GT(one.streaks.size(), 40000u);
+  for (const int threads : {2, 3}) {
+    EXPECT_EQ(differences(one, build_frame_values(frame, look, {}, threads)), 0u) << threads;
+  }
+  // Reusing a FrameValues that holds another frame gives the same values too.
+  FrameValues reused = build_frame_values(synthetic_rain(5000, look.camera, 16.0 / 9.0), look);
+  build_frame_values(frame, look, reused, {}, 2);
+  EXPECT_EQ(differences(one, reused), 0u);
 }
 
 TEST(FrameValues, DegenerateCameraThrows) {

@@ -2,7 +2,8 @@
 // coordinate and radius raintrace writes) is rounded to an integer of at most 8 digits, written
 // as 8 zero-padded digits with a two-digit table, and the point goes in between; everything
 // else goes through std::to_chars. Text is written a word at a time and trimmed afterwards, so
-// the hot path has no division loops and few data-dependent branches.
+// the hot path has no division loops and few data-dependent branches. write_fixed5() and
+// write_index() are inline in the header; only their rare cases live here.
 #include "povgen/number_format.h"
 
 #include <array>
@@ -16,32 +17,11 @@
 namespace raintrace::povgen {
 namespace {
 
-// Leading and trailing zeros are counted on the digits loaded as one little-endian word.
-static_assert(std::endian::native == std::endian::little, "digit scans assume little-endian");
+using detail::eight_digits;
+using detail::kZeroChars;
+using detail::store_8;
 
 constexpr std::array<double, 10> kPow10{1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9};
-
-/// "00000000": added to eight digit values 0..9, one per byte, it makes them text.
-constexpr std::uint64_t kZeroChars = 0x3030303030303030ULL;
-constexpr std::uint32_t kEightDigits = 100'000'000;
-
-/// The 8 decimal digits of value (< 10^8), zero-padded, one digit value (not yet a character)
-/// per byte, most significant digit in the lowest byte, so that storing the word writes them
-/// in reading order. SIMD within a register: both halves, then all four pairs, are split at
-/// once with multiply-shift divisions, with no table and no loop. A zero digit is a zero byte,
-/// so leading and trailing zeros are counted with countr_zero / countl_zero.
-std::uint64_t eight_digits(std::uint32_t value) {
-  // Two 32-bit lanes of 4 digits: x/100 == (x * 10486) >> 20 for x < 43699.
-  const std::uint64_t quads = (value / 10000) | (static_cast<std::uint64_t>(value % 10000) << 32);
-  const std::uint64_t hundreds = ((quads * 10486) >> 20) & 0x0000007F0000007FULL;
-  // Four 16-bit lanes of 2 digits: x/10 == (x * 103) >> 10 for x < 179.
-  const std::uint64_t pairs = hundreds | ((quads - hundreds * 100) << 16);
-  const std::uint64_t tens = ((pairs * 103) >> 10) & 0x000F000F000F000FULL;
-  return tens | ((pairs - tens * 10) << 8);
-}
-
-/// Stores the 8 bytes of word at out: one store, whatever part of it ends up being used.
-void store_8(char* out, std::uint64_t word) { std::memcpy(out, &word, 8); }
 
 /// Decimals that give 7 significant digits for magnitude in [1e-3, 1e7): 9 at 1e-3, one fewer
 /// per power of ten, 0 from 1e6 on. Comparisons instead of a loop: no branch to mispredict.
@@ -95,13 +75,30 @@ char* write_fixed(char* out, double value, double magnitude) {
 
 }  // namespace
 
-char* write_index(char* out, std::uint64_t value) {
-  if (value >= kEightDigits) return std::to_chars(out, out + max_number_chars, value).ptr;
-  const std::uint64_t digits = eight_digits(static_cast<std::uint32_t>(value));
-  const int leading_zeros = digits == 0 ? 7 : std::countr_zero(digits) / 8;  // "0" keeps a digit
-  store_8(out, (digits + kZeroChars) >> (8 * leading_zeros));
-  return out + 8 - leading_zeros;
+namespace detail {
+
+char* write_fixed5_rare(char* out, double value, double magnitude) {
+  // Also taken for NaN: non-finite values reach write_number(), which refuses them.
+  if (!(magnitude < 1e12)) return write_number(out, value);
+  // Round half away from zero, as the fast path; below 10^17 steps fit 64 bits.
+  const auto steps = static_cast<std::uint64_t>(magnitude * 1e5 + 0.5);
+  *out = '-';
+  out += value < 0;
+  out = write_index(out, steps / 100'000);
+  const auto fraction = static_cast<std::uint32_t>(steps % 100'000);
+  if (fraction == 0) return out;
+  // The fraction's 5 digits are the last 5 of the eight: bytes 3..7 of the word.
+  const std::uint64_t digits = eight_digits(fraction);
+  *out++ = '.';
+  store_8(out, (digits + kZeroChars) >> 24);
+  return out + 5 - std::countl_zero(digits) / 8;
 }
+
+char* write_index_wide(char* out, std::uint64_t value) {
+  return std::to_chars(out, out + max_number_chars, value).ptr;
+}
+
+}  // namespace detail
 
 char* write_number(char* out, double value) {
   if (!std::isfinite(value)) {

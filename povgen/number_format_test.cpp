@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <random>
 #include <stdexcept>
@@ -71,6 +72,86 @@ TEST(NumberFormat, RoundTripsWithinHalfAUnitOfTheSeventhDigit) {
     ASSERT_EQ(r.ec, std::errc{}) << text;
     ASSERT_LE(std::fabs(parsed - v), 5.0000001e-7 * std::fabs(v)) << v << " -> " << text;
   }
+}
+
+std::string fixed5(double value) {
+  char buffer[max_number_chars];
+  return {buffer, write_fixed5(buffer, value)};
+}
+
+/// What write_fixed5() promises: the shortest fixed-form text of the value rounded to 10 µm
+/// (half away from zero, as llround), with "-0" as "0".
+std::string shortest_fixed_of_rounded(double value) {
+  const double rounded = static_cast<double>(std::llround(value * 1e5)) / 1e5;
+  char text[64];
+  const auto r =
+      std::to_chars(text, text + 64, rounded == 0.0 ? 0.0 : rounded, std::chars_format::fixed);
+  return {text, r.ptr};
+}
+
+TEST(NumberFormatFixed5, KnownAnswers) {
+  EXPECT_EQ(fixed5(1.5), "1.5");
+  EXPECT_EQ(fixed5(-0.25), "-0.25");
+  EXPECT_EQ(fixed5(0.0), "0");
+  EXPECT_EQ(fixed5(-0.0), "0");
+  EXPECT_EQ(fixed5(-0.000004), "0");  // rounds to -0: still "0"
+  EXPECT_EQ(fixed5(100.0), "100");
+  EXPECT_EQ(fixed5(3.14159265358979), "3.14159");
+  EXPECT_EQ(fixed5(-12.3456789), "-12.34568");
+  EXPECT_EQ(fixed5(0.00001), "0.00001");
+  EXPECT_EQ(fixed5(0.000015), "0.00002");  // half a step rounds away from zero
+  EXPECT_EQ(fixed5(-0.000015), "-0.00002");
+  EXPECT_EQ(fixed5(0.0000149), "0.00001");
+  EXPECT_EQ(fixed5(999.999996), "1000");  // carries into a fourth integer digit
+  EXPECT_EQ(fixed5(-1234.56789), "-1234.56789");
+  EXPECT_EQ(fixed5(5e6), "5000000");
+  EXPECT_EQ(fixed5(123456789.000001), "123456789");
+  EXPECT_EQ(fixed5(2.5e12), "2.5e+12");  // beyond 10^12 m: write_number()
+}
+
+TEST(NumberFormatFixed5, IsTheShortestFixedTextOfTheRoundedValue) {
+  // Magnitudes from 1 µm to 10^6 m (both the 8-digit fast path and the wide one), both signs,
+  // and float inputs as the streak corners are.
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> exponent(-6.0, 6.0);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int i = 0; i < 300000; ++i) {
+    double v = (unit(rng) < 0.5 ? -1.0 : 1.0) * std::pow(10.0, exponent(rng));
+    if (i % 2) v = static_cast<float>(v);
+    ASSERT_EQ(fixed5(v), shortest_fixed_of_rounded(v)) << "value " << v;
+  }
+}
+
+TEST(NumberFormatFixed5, ExactStepsAndHalfStepsAtEveryDigitCount) {
+  // k steps and k + 1/2 steps for k of 1..11 digits, each with 0..5 trailing zeros (so every
+  // fraction length, and integers with no point at all).
+  for (std::int64_t k = 1; k < 100'000'000'000; k = k * 10 + 3) {
+    for (std::int64_t zeros = 1; zeros <= 100'000; zeros *= 10) {
+      const auto steps = static_cast<double>(k * zeros);
+      for (const double v : {steps * 1e-5, (steps + 0.5) * 1e-5}) {
+        EXPECT_EQ(fixed5(v), shortest_fixed_of_rounded(v)) << "value " << v;
+        EXPECT_EQ(fixed5(-v), shortest_fixed_of_rounded(-v)) << "value " << -v;
+      }
+    }
+  }
+}
+
+TEST(NumberFormatFixed5, ParsesBackWithinHalfAStep) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> coordinate(-200.0, 200.0);
+  for (int i = 0; i < 100000; ++i) {
+    const double v = coordinate(rng);
+    const std::string text = fixed5(v);
+    double parsed = 0.0;
+    const auto r = std::from_chars(text.data(), text.data() + text.size(), parsed);
+    ASSERT_EQ(r.ec, std::errc{}) << text;
+    ASSERT_LE(std::fabs(parsed - v), 0.5e-5 + 1e-12) << v << " -> " << text;
+  }
+}
+
+TEST(NumberFormatFixed5, RejectsNanAndInfinity) {
+  EXPECT_THROW(fixed5(std::numeric_limits<double>::quiet_NaN()), std::invalid_argument);
+  EXPECT_THROW(fixed5(-std::numeric_limits<double>::infinity()), std::invalid_argument);
 }
 
 TEST(NumberFormat, RejectsNanAndInfinity) {

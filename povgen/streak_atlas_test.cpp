@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <random>
 
 namespace raintrace::povgen {
 namespace {
@@ -75,6 +76,27 @@ TEST(StreakAtlas, CellLookup) {
   EXPECT_EQ(streak_atlas_cell(layout, 1.0, 1.0 / 128), 7 * 8);
   EXPECT_EQ(streak_atlas_cell(layout, 1.0, 1.0 / 512), -1);  // too faint: not written
   EXPECT_EQ(streak_atlas_cell(layout, 1.0, 0.0), -1);
+}
+
+TEST(StreakAtlas, RowIsTheNearestHalvingOfTheOpacity) {
+  // The row is round(−log2 opacity), the column round(flatness · 7): checked against libm's
+  // log2 and lround for opacities spread evenly in log2 (row boundaries at 2^−(r+½)).
+  const StreakAtlasLayout layout;
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> level(0.0, 9.0);
+  std::uniform_real_distribution<double> ratio(0.5, 1.0);
+  for (int i = 0; i < 100000; ++i) {
+    const double opacity = std::exp2(-level(rng));
+    const double axis_ratio = ratio(rng);
+    const auto row = static_cast<int>(std::lround(-std::log2(opacity)));
+    const auto column = static_cast<int>(std::lround((1.0 - axis_ratio) / 0.5 * 7));
+    const int expected = row >= 8 ? -1 : row * 8 + column;
+    ASSERT_EQ(streak_atlas_cell(layout, axis_ratio, opacity), expected) << opacity;
+  }
+  EXPECT_EQ(streak_atlas_cell(layout, 1.0, 0.7072), 0);   // −log2 = 0.49987
+  EXPECT_EQ(streak_atlas_cell(layout, 1.0, 0.7070), 8);   // −log2 = 0.50029
+  EXPECT_EQ(streak_atlas_cell(layout, 1.0, 2.0), 0);      // opacity above 1 counts as 1
+  EXPECT_EQ(streak_atlas_cell(layout, 1.0, 1e-310), -1);  // subnormal
 }
 
 TEST(StreakAtlas, PngHoldsThePixels) {

@@ -1,4 +1,4 @@
-// Frustum planes from the camera; plane tests for spheres and segments.
+// Frustum planes from the camera (the plane tests are inline in the header).
 #include "povgen/view_frustum.h"
 
 #include <cmath>
@@ -30,33 +30,6 @@ ViewFrustum::ViewFrustum(const sim::Camera& camera, double aspect) {
   m_normals[1] = glm::normalize(-m_right + m_tan_half_x * m_forward);
   m_normals[2] = glm::normalize(m_up + tan_half_y * m_forward);
   m_normals[3] = glm::normalize(-m_up + tan_half_y * m_forward);
-}
-
-bool ViewFrustum::sphere_visible(const glm::vec3& centre, float radius) const {
-  const glm::vec3 rel = centre - m_eye;
-  if (glm::dot(rel, m_forward) < -radius) return false;
-  for (const auto& normal : m_normals) {
-    if (glm::dot(rel, normal) < -radius) return false;
-  }
-  return true;
-}
-
-bool ViewFrustum::segment_visible(const glm::vec3& a, const glm::vec3& b, float margin) const {
-  const glm::vec3 ra = a - m_eye;
-  const glm::vec3 rb = b - m_eye;
-  if (glm::dot(ra, m_forward) < -margin && glm::dot(rb, m_forward) < -margin) return false;
-  for (const auto& normal : m_normals) {
-    if (glm::dot(ra, normal) < -margin && glm::dot(rb, normal) < -margin) return false;
-  }
-  return true;
-}
-
-float ViewFrustum::depth(const glm::vec3& point) const {
-  return glm::dot(point - m_eye, m_forward);
-}
-
-float ViewFrustum::pixel_size(float depth_m, int width_px) const {
-  return 2.0f * depth_m * m_tan_half_x / static_cast<float>(width_px);
 }
 
 }  // namespace raintrace::povgen

@@ -3,6 +3,7 @@
 // culled drop is one POV-Ray would not have shown.
 #pragma once
 
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
 #include "sim/camera.h"
@@ -39,5 +40,35 @@ class ViewFrustum {
   /// Inward unit normals of the left, right, bottom and top planes (all through the eye).
   glm::vec3 m_normals[4];
 };
+
+// The tests below run for every drop of a million-drop frame: inline.
+
+inline bool ViewFrustum::sphere_visible(const glm::vec3& centre, float radius) const {
+  const glm::vec3 rel = centre - m_eye;
+  if (glm::dot(rel, m_forward) < -radius) return false;
+  for (const auto& normal : m_normals) {
+    if (glm::dot(rel, normal) < -radius) return false;
+  }
+  return true;
+}
+
+inline bool ViewFrustum::segment_visible(const glm::vec3& a, const glm::vec3& b,
+                                         float margin) const {
+  const glm::vec3 ra = a - m_eye;
+  const glm::vec3 rb = b - m_eye;
+  if (glm::dot(ra, m_forward) < -margin && glm::dot(rb, m_forward) < -margin) return false;
+  for (const auto& normal : m_normals) {
+    if (glm::dot(ra, normal) < -margin && glm::dot(rb, normal) < -margin) return false;
+  }
+  return true;
+}
+
+inline float ViewFrustum::depth(const glm::vec3& point) const {
+  return glm::dot(point - m_eye, m_forward);
+}
+
+inline float ViewFrustum::pixel_size(float depth_m, int width_px) const {
+  return 2.0f * depth_m * m_tan_half_x / static_cast<float>(width_px);
+}
 
 }  // namespace raintrace::povgen
