@@ -2,9 +2,9 @@
 #include "povgen/frame_values.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <glm/geometric.hpp>
 
 #include "povgen/drop_shape.h"
@@ -40,11 +40,7 @@ float id_unit(std::uint64_t id) {
 /// droplets carry no id, but gravity only changes their vertical speed, so their horizontal
 /// velocity and size identify them from frame to frame.
 float droplet_unit(const glm::vec3& velocity, float diameter) {
-  auto bits = [](float f) {
-    std::uint32_t u = 0;
-    std::memcpy(&u, &f, sizeof u);
-    return static_cast<std::uint64_t>(u);
-  };
+  auto bits = [](float f) { return static_cast<std::uint64_t>(std::bit_cast<std::uint32_t>(f)); };
   const std::uint64_t key =
       bits(velocity.x) ^ (bits(velocity.z) << 32) ^ (bits(diameter) * 0x9e3779b97f4a7c15ull);
   return id_unit(key);
@@ -224,7 +220,8 @@ void build_frame_values(const sim::Frame& frame, const ExportParams& look, Frame
   const sim::SplashDroplets& splashes = frame.splashes;
   const auto splash_keep = static_cast<float>(std::clamp(look.splash_keep, 1e-6, 1.0));
   const bool has_velocity = splashes.velocity.size() == splashes.size();
-  // Survivors of the level of detail are drawn wider so the droplets cover the same area.
+  // Survivors of the level of detail are drawn wider so the droplets cover the same area
+  // (1 when every droplet is kept).
   const float splash_widen = 1.0f / std::sqrt(splash_keep);
   for (std::size_t i = 0; i < splashes.size(); ++i) {
     const glm::vec3& p = splashes.position[i];
@@ -237,8 +234,7 @@ void build_frame_values(const sim::Frame& frame, const ExportParams& look, Frame
     }
     // Droplets are glints: never smaller than half a pixel, or POV-Ray without AA misses them.
     const float pixel = view.pixel_size(std::max(view.depth(p), 1e-3f), look.width);
-    const float radius = std::max(0.5f * splashes.diameter[i], 0.5f * pixel) *
-                         (splash_keep < 1.0f ? splash_widen : 1.0f);
+    const float radius = std::max(0.5f * splashes.diameter[i], 0.5f * pixel) * splash_widen;
     if (!view.sphere_visible(p, radius)) continue;
     values.splashes.push_back({p, radius, 1.0f});
   }
