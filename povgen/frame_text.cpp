@@ -204,22 +204,6 @@ void write_triangle_pairs(Writer& w, std::uint64_t v) {
   w.put(">,\n");
 }
 
-/// The text of v < 10^8 in the low bytes of a word, and its length.
-struct IndexText {
-  std::uint64_t text;
-  int length;
-  /// The text of v + k for k ≤ 9 − (v's last digit): only the last character changes.
-  [[nodiscard]] std::uint64_t plus(std::uint64_t k) const {
-    return text + (k << (8 * (length - 1)));
-  }
-};
-
-IndexText index_text(std::uint64_t v) {
-  const std::uint64_t digits = detail::eight_digits(static_cast<std::uint32_t>(v));
-  const int leading_zeros = std::countr_zero(digits | (1ULL << 56)) / 8;  // "0" keeps a digit
-  return {(digits + detail::kZeroChars) >> (8 * leading_zeros), 8 - leading_zeros};
-}
-
 /// write_triangle_pairs(w, 4 * quad) for a million quads with two digit conversions instead of
 /// six: v = 4·quad and v + 2 are even, so v + 1 and v + 3 never carry into another digit.
 void write_face_pairs(Writer& w, std::uint64_t quad) {
@@ -228,8 +212,8 @@ void write_face_pairs(Writer& w, std::uint64_t quad) {
     write_triangle_pairs(w, v);
     return;
   }
-  const IndexText a = index_text(v);
-  const IndexText c = index_text(v + 2);
+  const detail::IndexText a = detail::index_text(static_cast<std::uint32_t>(v));
+  const detail::IndexText c = detail::index_text(static_cast<std::uint32_t>(v + 2));
   w.put('<');
   w.put_word(a.text, a.length);
   w.put(',');

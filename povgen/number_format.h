@@ -70,6 +70,23 @@ inline std::uint64_t eight_digits(std::uint32_t value) {
 /// Stores the 8 bytes of word at out: one store, whatever part of it ends up being used.
 inline void store_8(char* out, std::uint64_t word) { std::memcpy(out, &word, 8); }
 
+/// The text of an integer below 10^8 in the low bytes of a word (reading order), and its length.
+struct IndexText {
+  std::uint64_t text;
+  int length;
+  /// The text of the value + k, for k ≤ 9 − its last digit: only the last character changes.
+  [[nodiscard]] std::uint64_t plus(std::uint64_t k) const {
+    return text + (k << (8 * (length - 1)));
+  }
+};
+
+/// The text write_index() writes for value < 10^8, as a word: at least one digit ("0" for 0).
+inline IndexText index_text(std::uint32_t value) {
+  const std::uint64_t digits = eight_digits(value);
+  const int leading_zeros = std::countr_zero(digits | (1ULL << 56)) / 8;
+  return {(digits + kZeroChars) >> (8 * leading_zeros), 8 - leading_zeros};
+}
+
 /// Text pieces for write_fixed5(): each entry holds up to 3 characters in its low bytes (in
 /// reading order) and a length in its top byte.
 struct Fixed5Tables {
@@ -154,11 +171,9 @@ inline char* write_fixed5(char* out, double value) {
 inline char* write_index(char* out, std::uint64_t value) {
   using namespace detail;
   if (value >= kEightDigits) return write_index_wide(out, value);
-  const std::uint64_t digits = eight_digits(static_cast<std::uint32_t>(value));
-  // At least one digit: "0" for zero.
-  const int leading_zeros = std::countr_zero(digits | (1ULL << 56)) / 8;
-  store_8(out, (digits + kZeroChars) >> (8 * leading_zeros));
-  return out + 8 - leading_zeros;
+  const IndexText text = index_text(static_cast<std::uint32_t>(value));
+  store_8(out, text.text);
+  return out + text.length;
 }
 
 /// Appends write_number(value) to text.
