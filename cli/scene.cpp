@@ -168,6 +168,7 @@ void read_export(TableReader r, povgen::ExportParams& look) {
   r.read_number("sphere_distance_m", look.sphere_distance_m, Range::closed(0.0, 1000.0));
   r.read_number("min_streak_coverage", look.min_streak_coverage, Range::closed(0.0, 1.0));
   r.read_number("splash_keep", look.splash_keep, Range::open_closed(0.0, 1.0));
+  r.read_bool("environment_plate", look.environment_plate);
   r.read_bool("mask", look.mask);
   r.finish();
 }

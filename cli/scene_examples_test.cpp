@@ -134,7 +134,8 @@ TEST(SceneFormatDoc, CompleteExampleLoadsAndSetsEveryKey) {
         "light"}},
       {"fog", {"mode", "depth_m", "density_per_m", "colour"}},
       {"environment", {"name"}},
-      {"export", {"sphere_distance_m", "min_streak_coverage", "splash_keep", "mask"}},
+      {"export",
+       {"sphere_distance_m", "min_streak_coverage", "splash_keep", "environment_plate", "mask"}},
       {"simulation", {"substep_s", "prewarm_s", "ground_y_m"}},
   };
   for (const auto& [section, names] : keys) {

@@ -142,6 +142,7 @@ name = "field"
 sphere_distance_m = 2.5
 min_streak_coverage = 0.125
 splash_keep = 0.75
+environment_plate = false
 mask = true
 [simulation]
 substep_s = 0.001
@@ -207,6 +208,7 @@ ground_y_m = -0.5
   EXPECT_EQ(scene.look.sphere_distance_m, 2.5);
   EXPECT_EQ(scene.look.min_streak_coverage, 0.125);
   EXPECT_EQ(scene.look.splash_keep, 0.75);
+  EXPECT_FALSE(scene.look.environment_plate);
   EXPECT_TRUE(scene.look.mask);
   EXPECT_EQ(scene.sim.substep_s, 0.001);
   EXPECT_EQ(scene.sim.prewarm_s, 4.0);

@@ -74,6 +74,14 @@ struct ExportParams {
   /// glints of a few pixels that cost POV-Ray a sphere each (heavy rain throws ~30 k per
   /// frame). 1 writes every droplet. Default 0.5.
   double splash_keep = 0.5;
+  /// At quality preview, let frames draw the environment plate: a picture of the environment
+  /// without rain, rendered once (plate.ini → textures/environment_plate.png), placed behind the
+  /// rain instead of ray tracing the environment in every frame. Only the environment's lights
+  /// stay in the frame to light the rain. Applies to night_street and field without fog
+  /// (environment_plate_applies()); frames with lightning trace the full environment. What it
+  /// leaves out: the rain's reflection in the wet street, and scenery in front of rain that lies
+  /// behind it (none within ~7 m of night_street's default camera). Default true.
+  bool environment_plate = true;
   /// Also write a rain mask scene per frame (rain white on black). Default false.
   bool mask = false;
   FogParams fog;

@@ -350,7 +350,12 @@ void write_frame_text(const FrameValues& values, const TextSink& sink,
   out.number(values.flash_position.y);
   out.text(",");
   out.number(values.flash_position.z);
-  out.text(">;\n#include \"scene.inc\"\n");
+  out.text(">;\n");
+  // A bolt passes behind buildings: its frame traces the full environment, not the plate.
+  const bool bolts = std::any_of(values.bolts.begin(), values.bolts.end(),
+                                 [](const BoltValue& b) { return !b.segments.empty(); });
+  if (bolts) out.text("#declare RT_Bolts=1;\n");
+  out.text("#include \"scene.inc\"\n");
   write_sphere_union(out, values.drops, "RT_DropMaterial");
   write_streak_mesh(out, values.streaks, atlas);
   write_sphere_union(out, values.splashes, "RT_SplashMaterial");

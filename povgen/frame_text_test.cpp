@@ -35,6 +35,7 @@ TEST(FrameText, GoldenTinyFrame) {
       "#version 3.7;\n"
       "#declare RT_Flash=0.5;\n"
       "#declare RT_FlashPosition=<1,300,200>;\n"
+      "#declare RT_Bolts=1;\n"
       "#include \"scene.inc\"\n"
       "union{\n"
       "sphere{<0.5,1.25,-2>,0.001}\n"
@@ -79,6 +80,22 @@ TEST(FrameText, EmptyFrameHasOnlyTheHeader) {
   EXPECT_EQ(frame_text(values),
             "// raintrace frame 1\n#version 3.7;\n#declare RT_Flash=0;\n"
             "#declare RT_FlashPosition=<0,0,0>;\n#include \"scene.inc\"\n");
+}
+
+TEST(FrameText, FrameWithABoltSaysSoBeforeTheSceneInclude) {
+  // scene.inc reads RT_Bolts to trace the full environment (not the plate) behind a bolt.
+  FrameValues values;
+  values.index = 2;
+  BoltValue bolt;
+  bolt.brightness = 1.0;
+  bolt.segments.push_back({{0, 100, 200}, {5, 0, 200}, 0.5});
+  values.bolts.push_back(bolt);
+  const std::string text = frame_text(values);
+  const auto bolts = text.find("#declare RT_Bolts=1;\n");
+  ASSERT_NE(bolts, std::string::npos);
+  EXPECT_LT(bolts, text.find("#include \"scene.inc\""));
+  values.bolts.front().segments.clear();  // an empty bolt draws nothing
+  EXPECT_EQ(frame_text(values).find("RT_Bolts"), std::string::npos);
 }
 
 TEST(FrameText, SecondStreakUsesItsCellsUvQuad) {

@@ -96,6 +96,14 @@ std::string write_shared_files(const std::filesystem::path& out_dir, const Expor
   emit("scene.ini", ini_text(look, frame_count, "frame", "scene.pov"));
   emit(kEnvironmentInclude, environment_text(look.environment, scene_dir));
   emit(kMaterialsInclude, materials_template());
+  if (environment_plate_applies(look)) {
+    emit("plate.pov", plate_pov_text());
+    emit("plate.ini", plate_ini_text(look));
+  } else {
+    // Left by an earlier export into this folder: render/ takes plate.ini as asking for a plate.
+    std::filesystem::remove(out_dir / "plate.pov");
+    std::filesystem::remove(out_dir / "plate.ini");
+  }
   if (look.mask) {
     emit("mask.pov", dispatcher_text("mask", digits));
     emit("mask.ini", ini_text(look, frame_count, "mask", "mask.pov"));

@@ -1,7 +1,8 @@
 // End-to-end checks with the real POV-Ray (ctest label `povray`; skipped without povray):
 // every template and fog mode parses and renders, preview differs from final only through
-// RT_Preview, scene.ini names images frame_NNNN.png for a sub-range, masks are rain on black,
-// renders repeat across thread counts, mist deepens.
+// RT_Preview, the environment plate stands in for the environment, scene.ini names images
+// frame_NNNN.png for a sub-range, masks are rain on black, renders repeat across thread counts,
+// mist deepens.
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <algorithm>
@@ -152,6 +153,69 @@ TEST(PovRayTemplates, PreviewVariantsRenderAndFinalIsTheSameSceneWithRtPreviewZe
     }
     fs::remove_all(preview);
     fs::remove_all(final_dir);
+  }
+}
+
+/// Writes a width×height PNG of one colour (8 bits, as POV-Ray writes).
+void write_solid_png(const fs::path& path, int width, int height, float r, float g, float b) {
+  std::vector<float> px;
+  for (int i = 0; i < width * height; ++i) px.insert(px.end(), {r, g, b});
+  auto out = OIIO::ImageOutput::create(path.string());
+  ASSERT_TRUE(out);
+  ASSERT_TRUE(out->open(path.string(), OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::UINT8)));
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, px.data()));
+  out->close();
+}
+
+TEST(PovRayPlate, FramesDrawThePlateInsteadOfTheEnvironmentWhereItIsFaithful) {
+  SKIP_WITHOUT_POVRAY();
+  // Frame 1 holds a bolt and a flash, frame 2 rain only.
+  for (const char* environment : {"night_street", "field"}) {
+    ExportParams look = tiny_look();
+    look.environment.name = environment;
+    const std::string name = std::string{"plate_"} + environment;
+    const fs::path dir = make_folder(name, look, 2, 1500);
+    ASSERT_TRUE(fs::exists(dir / "plate.ini")) << name;
+    ASSERT_EQ(run_povray(dir, "plate.ini"), 0) << name << log_of(dir);
+    const auto plate = read_rgb(dir / "textures" / "environment_plate.png");
+    ASSERT_EQ(plate.size(), 48u * 27u * 3u) << name;
+    EXPECT_GT(spread(plate), 0.05) << name << ": the plate is blank";
+
+    // Without rain a frame is its plate, pixel for pixel: the plate lines up with the camera.
+    write_file_atomic(dir / "frames" / "bare.pov",
+                      "#declare RT_Flash=0;\n#include \"scene.inc\"\n");
+    const std::string bare = "frames/bare.pov +W48 +H27 +FN -A +L. +WT1 ";
+    ASSERT_EQ(run_povray(dir, bare + "+Oimages/bare.png"), 0) << name << log_of(dir);
+    EXPECT_EQ(read_rgb(dir / "images" / "bare.png"), plate) << name;
+
+    // With rain: close to the fully traced environment (what the plate leaves out is the rain
+    // in the wet street's reflection and droplets the kerbs hide).
+    const std::string frame2 = "frames/frame_0002.pov +W48 +H27 +FN -A +L. +WT1 ";
+    ASSERT_EQ(run_povray(dir, frame2 + "+Oimages/plate2.png"), 0) << name << log_of(dir);
+    ASSERT_EQ(run_povray(dir, frame2 + "+Oimages/full2.png Declare=RT_NoPlate=1"), 0) << name;
+    const auto with_plate = read_rgb(dir / "images" / "plate2.png");
+    const auto traced = read_rgb(dir / "images" / "full2.png");
+    ASSERT_EQ(with_plate.size(), traced.size()) << name;
+    EXPECT_LT(mean_abs_difference(with_plate, traced), 1.0 / 255.0) << name;
+
+    // The lightning frame traces its environment whatever the plate holds; a rain frame shows
+    // the plate's pixels. A plate of one flat colour tells the two apart.
+    const std::string frame1 = "frames/frame_0001.pov +W48 +H27 +FN -A +L. +WT1 ";
+    ASSERT_EQ(run_povray(dir, frame1 + "+Oimages/full1.png Declare=RT_NoPlate=1"), 0) << name;
+    write_solid_png(dir / "textures" / "environment_plate.png", 48, 27, 1.0f, 0.0f, 1.0f);
+    ASSERT_EQ(run_povray(dir, frame1 + "+Oimages/flat1.png"), 0) << name << log_of(dir);
+    EXPECT_EQ(read_rgb(dir / "images" / "flat1.png"), read_rgb(dir / "images" / "full1.png"))
+        << name;
+    ASSERT_EQ(run_povray(dir, bare + "+Oimages/flat_bare.png"), 0) << name << log_of(dir);
+    const auto flat = read_rgb(dir / "images" / "flat_bare.png");
+    ASSERT_FALSE(flat.empty());
+    EXPECT_EQ(flat[0], 1.0f);
+    EXPECT_EQ(flat[1], 0.0f);
+    // A plate of another size (rendered by hand at another resolution) is not used.
+    write_solid_png(dir / "textures" / "environment_plate.png", 24, 27, 1.0f, 0.0f, 1.0f);
+    ASSERT_EQ(run_povray(dir, frame2 + "+Oimages/wrong2.png"), 0) << name << log_of(dir);
+    EXPECT_EQ(read_rgb(dir / "images" / "wrong2.png"), traced) << name;
+    fs::remove_all(dir);
   }
 }
 

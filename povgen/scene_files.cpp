@@ -68,7 +68,82 @@ std::string fog_text(const FogParams& fog, const sim::Camera& camera) {
   return text;
 }
 
+// The environment plate in scene.inc: decides per frame whether to draw it, then includes the
+// environment (lights only when the plate stands in for its surfaces) and the plate itself, a
+// rectangle filling the camera's view at RT_PlateDistance so each pixel's ray meets the centre
+// of the plate's matching pixel. Falls back to the full environment when the plate is missing
+// or of another size (rendered by hand at another resolution), during lightning (the flash
+// lights the scenery; bolts pass behind buildings) and when rendering the plate itself.
+std::string environment_with_plate_text(const ExportParams& look) {
+  const double aspect = static_cast<double>(look.width) / look.height;
+  const std::string plate{kEnvironmentPlate};
+  std::string text;
+  text += "#ifndef(RT_NoPlate) #declare RT_NoPlate=0; #end\n";
+  text += "#ifndef(RT_Bolts) #declare RT_Bolts=0; #end\n";
+  text += "#declare RT_LightsOnly=0;\n";
+  text += "#if(RT_Preview & !RT_NoPlate & RT_Flash<=0 & !RT_Bolts)\n";
+  text += "#if(file_exists(\"" + plate + "\"))\n";
+  text += "#declare RT_Plate=pigment{image_map{png \"" + plate + "\" once}}\n";
+  text +=
+      "#declare RT_LightsOnly=(max_extent(RT_Plate).x=image_width & "
+      "max_extent(RT_Plate).y=image_height);\n#end\n#end\n";
+  text += "#include \"" + std::string{kEnvironmentInclude} + "\"\n";
+  text += "#if(RT_LightsOnly)\n";
+  // Far beyond any rain or bolt, so everything the frame adds stands in front of it.
+  text += "#declare RT_PlateDistance=10000;\n";
+  text += "#declare RT_PlateDir=vnormalize(" + vec(look.camera.look_at) + "-" +
+          vec(look.camera.position) + ");\n";
+  // POV-Ray's own look_at basis: right = sky × direction, up = direction × right.
+  text += "#declare RT_PlateRight=vnormalize(vcross(y,RT_PlateDir));\n";
+  text += "#declare RT_PlateUp=vcross(RT_PlateDir,RT_PlateRight);\n";
+  text += "#declare RT_PlateWidth=2*RT_PlateDistance*tan(radians(" +
+          format_number(look.camera.fov_deg) + "/2));\n";
+  text += "polygon{5,<0,0>,<1,0>,<1,1>,<0,1>,<0,0>\n";
+  // Emission 1 and nothing else: the plate's pixels come out as they went in.
+  text += " texture{pigment{RT_Plate} finish{ambient 0 diffuse 0 emission 1}}\n";
+  text += " no_shadow no_reflection\n";
+  text += " translate<-0.5,-0.5,0> scale<RT_PlateWidth,RT_PlateWidth/" + format_number(aspect) +
+          ",1> translate<0,0,RT_PlateDistance>\n";
+  text +=
+      " matrix<RT_PlateRight.x,RT_PlateRight.y,RT_PlateRight.z,RT_PlateUp.x,RT_PlateUp.y,"
+      "RT_PlateUp.z,RT_PlateDir.x,RT_PlateDir.y,RT_PlateDir.z," +
+      format_number(look.camera.position.x) + "," + format_number(look.camera.position.y) + "," +
+      format_number(look.camera.position.z) + ">}\n";
+  text += "#end\n";
+  return text;
+}
+
 }  // namespace
+
+bool environment_plate_applies(const ExportParams& look) {
+  const bool scenery_beyond_rain =
+      look.environment.include_path.empty() &&
+      (look.environment.name == "night_street" || look.environment.name == "field");
+  const bool fog = look.fog.mode != FogMode::off && look.fog.density_per_m > 0.0;
+  return look.quality == Quality::preview && look.environment_plate && scenery_beyond_rain && !fog;
+}
+
+std::string plate_pov_text() {
+  return "// raintrace: the environment alone, without rain: plate.ini renders it into\n"
+         "// textures/environment_plate.png, which the frames of a preview draw behind the rain.\n"
+         "#version 3.7;\n#declare RT_NoPlate=1;\n#include \"scene.inc\"\n";
+}
+
+std::string plate_ini_text(const ExportParams& look) {
+  check_params(look);
+  std::string text;
+  text +=
+      "; raintrace: `povray plate.ini` renders the environment once, without rain, into\n"
+      "; textures/environment_plate.png. Render it before scene.ini: every frame then draws this\n"
+      "; picture behind the rain instead of ray tracing the environment again. Without it the\n"
+      "; frames trace the whole environment themselves (the same scene, only slower).\n";
+  text += "Input_File_Name=plate.pov\n";
+  text += std::string{"Output_File_Name="} + kEnvironmentPlate + "\n";
+  text += "Output_File_Type=N\nOutput_Alpha=off\n";
+  text += "Width=" + std::to_string(look.width) + "\nHeight=" + std::to_string(look.height) + "\n";
+  text += "Library_Path=.\nQuality=9\nAntialias=off\nDisplay=off\nPause_When_Done=off\n";
+  return text;
+}
 
 std::string scene_inc_text(const ExportParams& look) {
   check_params(look);
@@ -96,7 +171,12 @@ std::string scene_inc_text(const ExportParams& look) {
   text += "#declare RT_CameraPosition=" + vec(look.camera.position) + ";\n";
   text += "#include \"" + std::string{kMaterialsInclude} + "\"\n";
   text += "#if(RT_Mask)\nbackground{rgb 0}\n#else\n";
-  text += "#declare RT_KeyLight=1;\n#include \"" + std::string{kEnvironmentInclude} + "\"\n";
+  text += "#declare RT_KeyLight=1;\n";
+  if (environment_plate_applies(look)) {
+    text += environment_with_plate_text(look);
+  } else {
+    text += "#include \"" + std::string{kEnvironmentInclude} + "\"\n";
+  }
   text += fog_text(look.fog, look.camera);
   // The flash lights the whole scene from the bolt's top; RT_KeyLight comes from the
   // environment, so lightning_light is relative to its main light.
@@ -137,6 +217,9 @@ std::string ini_text(const ExportParams& look, int frame_count, const char* pref
       "; frames that exist: frame_number and the image names then match frames/*_NNNN.pov.\n"
       "; raintrace never uses `clock`, so the stretched clock range is harmless.\n"
       "; One range only: povray scene.ini +SF5 +EF9\n";
+  if (p == "frame" && environment_plate_applies(look)) {
+    text += "; Preview: `povray plate.ini` first renders the environment once for all frames.\n";
+  }
   text += "Input_File_Name=" + d + "\n";
   text += "Output_File_Name=images/" + p + "_\n";
   text += "Output_File_Type=N\nOutput_Alpha=off\n";

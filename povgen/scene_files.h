@@ -13,11 +13,24 @@ namespace raintrace::povgen {
 inline constexpr const char* kEnvironmentInclude = "environment.inc";
 inline constexpr const char* kMaterialsInclude = "raintrace_materials.inc";
 inline constexpr const char* kStreakAtlas = "textures/streak_atlas.png";
+inline constexpr const char* kEnvironmentPlate = "textures/environment_plate.png";
 
 /// scene.inc for these params. Checks the params POV-Ray text depends on (finite numbers,
 /// image size in [16, 8192], a built-in environment name unless an include is used) and throws
 /// std::invalid_argument naming the field otherwise.
 std::string scene_inc_text(const ExportParams& look);
+
+/// Whether frames may draw the environment plate: quality preview, look.environment_plate,
+/// a built-in environment whose scenery all lies beyond the rain (night_street, field; not
+/// closeup, whose backdrop wall stands inside it) and no fog (fog in the plate would be counted
+/// again on the way to it).
+bool environment_plate_applies(const ExportParams& look);
+
+/// plate.pov: the environment alone (scene.inc with RT_NoPlate=1, no rain).
+std::string plate_pov_text();
+
+/// plate.ini: renders plate.pov into textures/environment_plate.png at the frames' size.
+std::string plate_ini_text(const ExportParams& look);
 
 /// scene.pov: includes frames/<prefix>_NNNN.pov for POV-Ray's frame_number (prefix "frame"
 /// or "mask"; digits from frame_digits()).

@@ -45,6 +45,7 @@ TEST(SceneFiles, SceneIncDeclaresRtPreviewPerQuality) {
   // Environments test RT_Preview for their cheap stand-ins; guarded so a command-line
   // Declare=RT_Preview=… wins, and declared before the environment is included.
   ExportParams look;
+  look.environment_plate = false;  // preview only, tested on its own below
   look.quality = Quality::preview;
   const std::string preview = scene_inc_text(look);
   EXPECT_TRUE(contains(preview, "\n#ifndef(RT_Preview) #declare RT_Preview=1; #end\n"));
@@ -101,6 +102,50 @@ TEST(SceneFiles, FogModes) {
   EXPECT_TRUE(contains(media, "jitter 0"));
   look.fog.density_per_m = 0.0;
   EXPECT_FALSE(contains(scene_inc_text(look), "media{"));
+}
+
+TEST(SceneFiles, EnvironmentPlateOnlyWhereItStandsInFaithfully) {
+  ExportParams look;  // preview, night_street, no fog
+  EXPECT_TRUE(environment_plate_applies(look));
+  const std::string inc = scene_inc_text(look);
+  EXPECT_TRUE(contains(inc, "file_exists(\"textures/environment_plate.png\")"));
+  EXPECT_TRUE(contains(inc, "RT_Flash<=0 & !RT_Bolts"));
+  EXPECT_TRUE(contains(inc, "max_extent(RT_Plate).x=image_width"));
+  EXPECT_TRUE(contains(ini_text(look, 2, "frame", "scene.pov"), "povray plate.ini"));
+  look.environment.name = "field";
+  EXPECT_TRUE(environment_plate_applies(look));
+
+  auto refused = [](auto change) {
+    ExportParams changed;
+    change(changed);
+    EXPECT_FALSE(environment_plate_applies(changed));
+    const std::string text = scene_inc_text(changed);
+    EXPECT_FALSE(contains(text, "environment_plate"));
+    EXPECT_TRUE(contains(text, "#include \"environment.inc\"\n"));
+  };
+  refused([](ExportParams& l) { l.quality = Quality::final; });
+  refused([](ExportParams& l) { l.environment_plate = false; });
+  refused([](ExportParams& l) { l.environment.name = "closeup"; });  // backdrop inside the rain
+  refused([](ExportParams& l) { l.environment.include_path = "mine.inc"; });
+  refused([](ExportParams& l) { l.fog.mode = FogMode::ground; });
+  refused([](ExportParams& l) { l.fog.mode = FogMode::media; });
+  // Fog with density 0 is no fog: the plate applies again.
+  ExportParams clear;
+  clear.fog.mode = FogMode::media;
+  clear.fog.density_per_m = 0.0;
+  EXPECT_TRUE(environment_plate_applies(clear));
+}
+
+TEST(SceneFiles, PlateIniRendersTheEnvironmentAloneAtTheFramesSize) {
+  ExportParams look;
+  look.width = 320;
+  look.height = 240;
+  const std::string ini = plate_ini_text(look);
+  EXPECT_TRUE(contains(ini, "\nInput_File_Name=plate.pov\n"));
+  EXPECT_TRUE(contains(ini, "\nOutput_File_Name=textures/environment_plate.png\n"));
+  EXPECT_TRUE(contains(ini, "\nWidth=320\nHeight=240\n"));
+  EXPECT_TRUE(contains(ini, "\nAntialias=off\n"));
+  EXPECT_TRUE(contains(plate_pov_text(), "#declare RT_NoPlate=1;\n#include \"scene.inc\""));
 }
 
 TEST(SceneFiles, HostileValuesAreRefused) {
