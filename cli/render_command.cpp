@@ -296,6 +296,10 @@ int run_render(const RenderArgs& args) {
       settings.stop = &g_stop;
       settings.on_progress = on_progress;
       settings.on_failed = on_failed;
+      settings.on_notice = [&](const std::string& s) {
+        printer.break_line();
+        fmt::print(stderr, "render: {}\n", s);
+      };
       if (overlapped) {
         render::FrameFeed feed{range.last - range.first + 1,
                                povgen::frame_digits(overlapped->frames)};

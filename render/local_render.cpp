@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "povgen/manifest.h"
+#include "render/environment_plate.h"
 #include "render/frame_plan.h"
 #include "render/process.h"
 
@@ -139,6 +140,35 @@ class FeedSource : public JobSource {
   bool m_closed = false;
 };
 
+// Holds the frames back until the environment plate is finished, so every frame sees the same
+// plate (or none). Meanwhile the feed is still drained, so the manifest and progress keep up
+// with the exporter.
+class AfterPlate : public JobSource {
+ public:
+  AfterPlate(FeedSource& source, EnvironmentPlate& plate, std::function<void()> on_plate_done)
+      : m_source{source}, m_plate{plate}, m_on_plate_done{std::move(on_plate_done)} {}
+
+  std::optional<RenderJob> next() override {
+    if (!m_plate_done) {
+      if (!m_plate.poll()) {
+        m_source.pull();
+        return std::nullopt;
+      }
+      m_plate_done = true;
+      m_on_plate_done();
+    }
+    return m_source.next();
+  }
+
+  [[nodiscard]] bool exhausted() const override { return m_plate_done && m_source.exhausted(); }
+
+ private:
+  FeedSource& m_source;
+  EnvironmentPlate& m_plate;
+  std::function<void()> m_on_plate_done;
+  bool m_plate_done = false;
+};
+
 }  // namespace
 
 void require_povray() {
@@ -206,14 +236,25 @@ RenderSummary render_local(const std::filesystem::path& out_dir,
   };
   callbacks.on_tick = report;
 
+  auto report_plate = [&](const EnvironmentPlate& plate) {
+    if (!plate.problem().empty() && !plate.interrupted() && settings.on_notice) {
+      settings.on_notice(environment_plate_notice(plate));
+    }
+  };
+
   if (settings.incoming != nullptr) {
-    FeedSource source{*settings.incoming, book, out_dir, settings, digits, jobs, progress};
+    // Started before anything is known about the frames: it renders while the exporter
+    // simulates. (A run whose frames all turn out up to date renders it anyway.)
+    EnvironmentPlate plate{out_dir, runner.width, runner.height, settings.stop};
+    FeedSource feed{*settings.incoming, book, out_dir, settings, digits, jobs, progress};
+    AfterPlate source{feed, plate, [&] { report_plate(plate); }};
     report();
     summary.interrupted = !run_povray_jobs(out_dir, source, runner, callbacks);
+    plate.wait();  // only still running when stopped: this ends it
     // Stopped early: the exporter stops too (same flag) after its current frame. Record every
     // frame it finished, so the manifest matches the frame files on disk.
-    while (!source.feed_closed()) {
-      source.pull();
+    while (!feed.feed_closed()) {
+      feed.pull();
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
     report();
@@ -252,6 +293,18 @@ RenderSummary render_local(const std::filesystem::path& out_dir,
     progress.skipped -= static_cast<int>(frames.size());
   }
   report();
+  if (!queue.empty()) {
+    EnvironmentPlate plate{out_dir, runner.width, runner.height, settings.stop};
+    while (!plate.poll()) {  // plate.wait(), with the progress display kept alive
+      report();
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    if (plate.interrupted()) {
+      summary.interrupted = true;
+      return summary;
+    }
+    report_plate(plate);
+  }
   summary.interrupted = !run_povray_jobs(out_dir, std::move(queue), runner, callbacks);
   report();
   return summary;

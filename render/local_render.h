@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "render/frame_feed.h"
@@ -42,6 +43,9 @@ struct LocalRenderSettings {
   const std::atomic<bool>* stop = nullptr;
   std::function<void(const RenderProgress&)> on_progress;  ///< ~10×/s and on every frame
   std::function<void(const FrameFailure&)> on_failed;
+  /// One line about something that went wrong without failing a frame: "environment plate
+  /// failed (…): frames render the full environment".
+  std::function<void(const std::string&)> on_notice;
 };
 
 struct RenderSummary {
@@ -50,6 +54,10 @@ struct RenderSummary {
   bool interrupted = false;
 };
 
+/// A folder with plate.ini gets its environment plate (environment_plate.h) brought up to date
+/// before any frame's POV-Ray starts: without settings.incoming only when some frame or mask is
+/// to be rendered; with it, from the start, while the exporter works. A failed plate is reported
+/// through on_notice and the frames render the full environment.
 /// Throws std::runtime_error when POV-Ray is not installed (one line, with the apt command) or
 /// the folder has no readable manifest.json. With settings.incoming, returns once the feed is
 /// closed and everything it brought is rendered, or when stopped (then after the feed closes, so

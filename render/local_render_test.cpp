@@ -4,9 +4,12 @@
 #include <gtest/gtest.h>
 #include <atomic>
 #include <chrono>
+#include <fstream>
+#include <sstream>
 #include <thread>
 
 #include "povgen/manifest.h"
+#include "render/environment_plate.h"
 #include "render/image_check.h"
 #include "render/process.h"
 #include "render/test_folder.h"
@@ -33,6 +36,24 @@ void expect_every_frame_rendered(const std::filesystem::path& dir, std::size_t f
     EXPECT_EQ(f.rendered_hash, f.input_hash);
   }
   EXPECT_TRUE(std::filesystem::is_empty(dir / "images/.tmp"));
+}
+
+std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in{path, std::ios::binary};
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// Every frame's POV-Ray log says (the test folder's #debug line) whether it drew the plate.
+void expect_every_frame_log_says(const std::filesystem::path& dir, const std::string& what) {
+  int logs = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "logs")) {
+    if (entry.path().filename().string().rfind("image_", 0) != 0) continue;
+    ++logs;
+    EXPECT_NE(read_text(entry.path()).find(what), std::string::npos) << entry.path();
+  }
+  EXPECT_GT(logs, 0);
 }
 
 class PovrayLocalRender : public ::testing::Test {
@@ -136,6 +157,104 @@ TEST_F(PovrayLocalRender, StopFlagKeepsFinishedFramesAndTheRerunCompletes) {
   }
 }
 
+TEST_F(PovrayLocalRender, PlateIsRenderedBeforeTheFramesAndEveryFrameDrawsIt) {
+  const auto dir = testing::fresh_test_dir("plate");
+  testing::write_test_folder(dir, {.frames = 4, .plate = true});
+  std::vector<std::string> notices;
+  auto s = settings(2, 2);
+  s.on_notice = [&](const std::string& n) { notices.push_back(n); };
+  const auto summary = render_local(dir, s);
+  EXPECT_TRUE(summary.failures.empty());
+  EXPECT_TRUE(notices.empty());
+  expect_every_frame_rendered(dir, 4);
+  EXPECT_TRUE(image_is_complete(dir / kPlateImage, 64, 36));
+  EXPECT_EQ(read_text(dir / kPlateSidecar), environment_plate_inputs_hash(dir) + "\n");
+  expect_every_frame_log_says(dir, "raintrace: environment plate used");
+}
+
+TEST_F(PovrayLocalRender, UpToDatePlateIsNotRenderedAgainEvenWhenFramesAreForced) {
+  const auto dir = testing::fresh_test_dir("plate_again");
+  testing::write_test_folder(dir, {.frames = 2, .plate = true});
+  ASSERT_EQ(render_local(dir, settings(2)).progress.done, 2);
+  const auto plate_time = std::filesystem::last_write_time(dir / kPlateImage);
+  const auto log_time = std::filesystem::last_write_time(dir / kPlateLog);
+  EXPECT_EQ(render_local(dir, settings(2)).progress.total, 0);
+  EXPECT_EQ(render_local(dir, settings(2, 12, true)).progress.done, 2);
+  EXPECT_EQ(std::filesystem::last_write_time(dir / kPlateImage), plate_time);
+  EXPECT_EQ(std::filesystem::last_write_time(dir / kPlateLog), log_time);
+  expect_every_frame_log_says(dir, "raintrace: environment plate used");
+}
+
+TEST_F(PovrayLocalRender, ChangedEnvironmentRendersThePlateAgain) {
+  const auto dir = testing::fresh_test_dir("plate_changed");
+  testing::write_test_folder(dir, {.frames = 2, .plate = true});
+  ASSERT_EQ(render_local(dir, settings(2)).progress.done, 2);
+  const auto before = read_text(dir / kPlateSidecar);
+  std::filesystem::remove(dir / kPlateLog);
+  {
+    std::ofstream out{dir / "environment.inc", std::ios::app};
+    out << "sphere { <0,3,2>, 1 pigment { rgb <1,0,0> } }\n";
+  }
+  // The test folder's frame hashes leave out environment.inc (the exporter's include it), so
+  // the frames are forced to give the run something to render.
+  EXPECT_EQ(render_local(dir, settings(2, 12, true)).progress.done, 2);
+  EXPECT_TRUE(std::filesystem::exists(dir / kPlateLog));
+  EXPECT_TRUE(image_is_complete(dir / kPlateImage, 64, 36));
+  EXPECT_NE(read_text(dir / kPlateSidecar), before);
+  EXPECT_EQ(read_text(dir / kPlateSidecar), environment_plate_inputs_hash(dir) + "\n");
+}
+
+TEST_F(PovrayLocalRender, PlateThatFailsIsNoticedAndFramesRenderTheFullEnvironment) {
+  const auto dir = testing::fresh_test_dir("plate_fail");
+  testing::write_test_folder(dir, {.frames = 3, .plate = true});
+  {
+    std::ofstream out{dir / "plate.pov", std::ios::app};
+    out << "sphere { <0,0,0> oops }\n";
+  }
+  std::vector<std::string> notices;
+  auto s = settings(2);
+  s.on_notice = [&](const std::string& n) { notices.push_back(n); };
+  const auto summary = render_local(dir, s);
+  EXPECT_TRUE(summary.failures.empty());
+  expect_every_frame_rendered(dir, 3);
+  ASSERT_EQ(notices.size(), 1U);
+  EXPECT_NE(notices[0].find("environment plate failed"), std::string::npos) << notices[0];
+  EXPECT_NE(notices[0].find("File 'plate.pov' line 6: Parse Error"), std::string::npos)
+      << notices[0];
+  EXPECT_NE(notices[0].find(kPlateLog), std::string::npos) << notices[0];
+  EXPECT_FALSE(std::filesystem::exists(dir / kPlateImage));
+  EXPECT_FALSE(std::filesystem::exists(dir / kPlateSidecar));
+  expect_every_frame_log_says(dir, "raintrace: full environment");
+}
+
+TEST_F(PovrayLocalRender, StopWhileThePlateRendersStartsNoFrameAndLeavesNoPlate) {
+  const auto dir = testing::fresh_test_dir("plate_stop");
+  testing::write_test_folder(dir, {.frames = 2, .plate = true});
+  std::atomic<bool> stop{false};
+  std::vector<std::string> notices;
+  auto s = settings(2);
+  s.stop = &stop;
+  s.on_progress = [&](const RenderProgress&) { stop = true; };
+  s.on_notice = [&](const std::string& n) { notices.push_back(n); };
+  const auto summary = render_local(dir, s);
+  EXPECT_TRUE(summary.interrupted);
+  EXPECT_TRUE(summary.failures.empty());
+  EXPECT_TRUE(notices.empty());  // an interruption is not a failure
+  EXPECT_EQ(summary.progress.done, 0);
+  EXPECT_FALSE(std::filesystem::exists(dir / kPlateImage));
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "logs")) {
+    EXPECT_NE(entry.path().filename().string().rfind("image_", 0), 0U) << entry.path();
+  }
+}
+
+TEST_F(PovrayLocalRender, FolderWithoutPlateIniRendersNoPlate) {
+  const auto dir = testing::fresh_test_dir("no_plate");
+  testing::write_test_folder(dir, {.frames = 2});
+  ASSERT_EQ(render_local(dir, settings(2)).progress.done, 2);
+  EXPECT_FALSE(std::filesystem::exists(dir / "textures"));
+  EXPECT_FALSE(std::filesystem::exists(dir / kPlateLog));
+}
+
 // The test folder's frames handed over through a FrameFeed from another thread, the way the
 // exporter publishes them while it simulates: `first` frames at once, the rest once `release`
 // returns true (or a generous safety deadline passes, so a broken renderer fails instead of
@@ -190,6 +309,27 @@ TEST_F(PovrayLocalRender, FedFramesRenderBeforeTheLastFrameIsPublished) {
   EXPECT_EQ(summary.progress.exported, 6);
   EXPECT_EQ(summary.progress.export_total, 6);
   expect_every_frame_rendered(dir, 6);
+}
+
+TEST_F(PovrayLocalRender, FedFramesWaitForThePlateWhileTheFeedIsStillRead) {
+  const auto dir = testing::fresh_test_dir("feed_plate");
+  testing::write_test_folder(dir, {.frames = 4, .plate = true});
+  FrameFeed feed{4, 4};
+  std::atomic<int> exported{0};
+  // The rest is published only once the renderer has recorded the first two, which it must do
+  // while the plate still renders (no frame can have started before it).
+  Producer producer{feed, povgen::read_manifest(dir / "manifest.json").frames, 2,
+                    [&] { return exported.load() >= 2; }};
+  auto fed = settings(2);
+  fed.incoming = &feed;
+  fed.on_progress = [&](const RenderProgress& p) { exported = p.exported; };
+  const auto summary = render_local(dir, fed);
+  producer.join();
+  EXPECT_TRUE(producer.released_by_renderer());
+  EXPECT_TRUE(summary.failures.empty());
+  expect_every_frame_rendered(dir, 4);
+  EXPECT_TRUE(image_is_complete(dir / kPlateImage, 64, 36));
+  expect_every_frame_log_says(dir, "raintrace: environment plate used");
 }
 
 TEST_F(PovrayLocalRender, FedFramesThatAreUpToDateAreSkippedAndMasksFollow) {

@@ -37,6 +37,14 @@ std::vector<std::string> povray_argv(Pass pass, const FrameSpan& span, int digit
           fmt::format("+EF{}", span.last)};
 }
 
+std::string environment_plate_temp_name() { return temp_dir_name() + "/environment_plate.png"; }
+
+std::vector<std::string> environment_plate_argv() {
+  // +O overrides plate.ini's Output_File_Name: the plate reaches its final name only verified.
+  return {"povray", "plate.ini", "-D",  "+FN",
+          "-V",     "-GR",       "+L.", "+O" + environment_plate_temp_name()};
+}
+
 std::map<std::string, std::string> povray_env(const std::filesystem::path& out_dir) {
   return {{"HOME", std::filesystem::absolute(out_dir).string()}};
 }

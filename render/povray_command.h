@@ -39,6 +39,15 @@ std::string temp_dir_name();
 /// identical to the ini's whole animation.
 std::vector<std::string> povray_argv(Pass pass, const FrameSpan& span, int digits = 4);
 
+/// Where POV-Ray writes the environment plate first ("images/.tmp/environment_plate.png").
+std::string environment_plate_temp_name();
+
+/// argv for `povray` rendering the folder's environment plate (plate.ini, one still image) into
+/// environment_plate_temp_name(), with the output folder as working directory like
+/// povray_argv:
+///   povray plate.ini -D +FN -V -GR +L. +Oimages/.tmp/environment_plate.png
+std::vector<std::string> environment_plate_argv();
+
 /// Environment for POV-Ray: HOME = out_dir, where prepare_povray_home() put an empty
 /// .povray/3.7/povray.conf (silences the harmless "cannot open user configuration" warning).
 std::map<std::string, std::string> povray_env(const std::filesystem::path& out_dir);

@@ -28,6 +28,14 @@ TEST(PovArgv, FinalFrameHasAsManyNinesAsTheFileNamesHaveDigits) {
   EXPECT_EQ(temp_image_name(Pass::image, 7, 5), "images/.tmp/frame_00007.png");
 }
 
+TEST(PovArgv, EnvironmentPlateIsOneStillFromPlateIniIntoTheTempFolder) {
+  const std::vector<std::string> expected{
+      "povray", "plate.ini", "-D",  "+FN",
+      "-V",     "-GR",       "+L.", "+Oimages/.tmp/environment_plate.png"};
+  EXPECT_EQ(environment_plate_argv(), expected);
+  EXPECT_EQ(environment_plate_temp_name(), "images/.tmp/environment_plate.png");
+}
+
 TEST(ImageNames, AreFourDigitLikeScenesFinalFrame9999) {
   EXPECT_EQ(final_image_name(Pass::image, 7), "images/frame_0007.png");
   EXPECT_EQ(temp_image_name(Pass::image, 12), "images/.tmp/frame_0012.png");

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "povgen/manifest.h"
+#include "render/environment_plate.h"
 #include "render/frame_plan.h"
 #include "render/process.h"
 
@@ -192,6 +193,19 @@ RenderSummary render_slurm(const std::filesystem::path& out_dir_in,
   progress.total = static_cast<int>(frames.size() + masks.size());
   progress.skipped = static_cast<int>(manifest.frames.size() - frames.size());
   if (progress.total == 0) return summary;
+  {
+    // Array tasks may start POV-Ray as soon as the job is submitted, so the plate is finished
+    // here first; the folder is shared, so the nodes see it.
+    EnvironmentPlate plate{out_dir, manifest.width, manifest.height, settings.stop};
+    plate.wait();
+    if (plate.interrupted()) {
+      summary.interrupted = true;
+      return summary;
+    }
+    if (!plate.problem().empty() && settings.on_status) {
+      settings.on_status(environment_plate_notice(plate));
+    }
+  }
 
   int tasks = settings.tasks > 0 ? settings.tasks : std::clamp((progress.total + 7) / 8, 1, 64);
   const auto image_shares = share_frames(frames, tasks);

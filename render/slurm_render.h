@@ -44,6 +44,9 @@ std::string sbatch_script(const std::filesystem::path& out_dir,
                           const std::filesystem::path& raintrace_exe, int tasks);
 
 /// Submits, follows and merges; throws std::runtime_error when sbatch is missing or refuses.
+/// When something is to be rendered, the environment plate (environment_plate.h) is brought up to
+/// date on this machine first; a failure is reported through on_status and frames render the
+/// full environment.
 RenderSummary render_slurm(const std::filesystem::path& out_dir,
                            const SlurmRenderSettings& settings);
 

@@ -9,6 +9,8 @@
 #include <cstdlib>
 
 #include "povgen/manifest.h"
+#include "render/environment_plate.h"
+#include "render/image_check.h"
 #include "render/process.h"
 #include "render/test_folder.h"
 
@@ -110,6 +112,29 @@ TEST_F(SlurmRender, JobArrayRendersTheSamePixelsAsLocal) {
   }
   // A second submission finds nothing to do and submits nothing.
   EXPECT_EQ(render_slurm(dir / "slurm", settings).progress.total, 0);
+}
+
+TEST_F(SlurmRender, EnvironmentPlateIsFinishedBeforeTheArrayIsSubmitted) {
+  const auto dir = testing::fresh_test_dir("slurm_plate");
+  testing::write_test_folder(dir / "out", {.frames = 2, .plate = true});
+  SlurmRenderSettings settings;
+  settings.tasks = 2;
+  settings.raintrace_exe = RAINTRACE_BINARY;
+  settings.poll_seconds = 0.3;
+  std::vector<std::string> statuses;
+  bool plate_before_submission = false;
+  settings.on_status = [&](const std::string& s) {
+    statuses.push_back(s);
+    if (s.rfind("submitted", 0) == 0) {
+      plate_before_submission = image_is_complete(dir / "out" / kPlateImage, 64, 36);
+    }
+  };
+  const auto summary = render_slurm(dir / "out", settings);
+  EXPECT_TRUE(summary.failures.empty());
+  EXPECT_EQ(summary.progress.done, 2);
+  EXPECT_TRUE(plate_before_submission);
+  for (const auto& s : statuses) EXPECT_EQ(s.find("environment plate"), std::string::npos) << s;
+  EXPECT_TRUE(image_is_complete(dir / "out/images/frame_0002.png", 64, 36));
 }
 
 TEST_F(SlurmRender, AFailingFrameIsReportedFromItsTask) {

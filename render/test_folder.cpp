@@ -18,6 +18,13 @@ void write_file(const std::filesystem::path& path, const std::string& text) {
   out << text;
 }
 
+std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in{path, std::ios::binary};
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
 std::string frame_text(int frame, int spheres) {
   std::string s = "#include \"scene.inc\"\nunion {\n";
   for (int k = 0; k < spheres; ++k) {
@@ -29,6 +36,46 @@ std::string frame_text(int frame, int spheres) {
   }
   s += fmt::format("  pigment {{ rgb <0.2,{},0.9> }}\n}}\n", 0.1 + 0.8 * (frame % 10) / 10.0);
   return s;
+}
+
+// The preview exporter's plate files in miniature: the environment (a sky and a lit floor) once
+// into the plate, and a scene.inc that puts the plate on a screen filling the view.
+void write_plate_files(const std::filesystem::path& dir, const TestFolderSpec& spec) {
+  write_file(dir / "plate.ini", fmt::format("Input_File_Name=plate.pov\nWidth={}\nHeight={}\n"
+                                            "Output_File_Name=textures/environment_plate.png\n"
+                                            "Output_File_Type=N\nAntialias=off\nQuality=9\n"
+                                            "Library_Path=.\n",
+                                            spec.width, spec.height));
+  write_file(dir / "plate.pov",
+             "#version 3.7;\nglobal_settings { assumed_gamma 1.0 }\n"
+             "camera { location <0,0,-5> look_at <0,0,0> }\n"
+             "light_source { <5,5,-5> rgb 1 }\n#include \"environment.inc\"\n");
+  write_file(dir / "environment.inc",
+             "sky_sphere { pigment { gradient y color_map { [0 rgb <0.6,0.7,0.9>] "
+             "[1 rgb <0.1,0.2,0.5>] } } }\n"
+             "plane { y, -1.5 pigment { checker rgb 0.2 rgb 0.8 } }\n");
+  // The default camera sees ±10 × ±7.5 units at the screen's distance of 15.
+  write_file(
+      dir / "scene.inc",
+      read_text(dir / "scene.inc") +
+          fmt::format("#declare RT_PlateUsed = false;\n"
+                      "#if (!RT_Mask & file_exists(\"textures/environment_plate.png\"))\n"
+                      "  #declare RT_Plate = pigment {{ image_map {{ png "
+                      "\"textures/environment_plate.png\" }} }};\n"
+                      "  #declare RT_PlateSize = max_extent(RT_Plate);\n"
+                      "  #declare RT_PlateUsed = (RT_PlateSize.x = {} & RT_PlateSize.y = {});\n"
+                      "#end\n"
+                      "#if (RT_PlateUsed)\n"
+                      "  #debug \"raintrace: environment plate used\\n\"\n"
+                      "  box {{ <-0.5,-0.5,0>, <0.5,0.5,0.001> pigment {{ RT_Plate "
+                      "translate <-0.5,-0.5,0> }}\n"
+                      "    finish {{ emission 1 diffuse 0 }} no_shadow scale <20,15,1> "
+                      "translate z*10 }}\n"
+                      "#else\n"
+                      "  #debug \"raintrace: full environment\\n\"\n"
+                      "  #include \"environment.inc\"\n"
+                      "#end\n",
+                      spec.width, spec.height));
 }
 
 }  // namespace
@@ -56,6 +103,7 @@ void write_test_folder(const std::filesystem::path& dir, const TestFolderSpec& s
              "light_source { <5,5,-5> rgb 1 }\nbackground { rgb 0.05 }\n"
              "#ifndef (RT_Mask) #declare RT_Mask = 0; #end\n"
              "#if (RT_Mask) #default { finish { ambient 1 diffuse 0 } } #end\n");
+  if (spec.plate) write_plate_files(dir, spec);
   povgen::Manifest manifest;
   manifest.raintrace_version = "test";
   manifest.width = spec.width;

@@ -13,6 +13,11 @@ struct TestFolderSpec {
   int width = 64;
   int height = 36;
   int spheres = 200;  ///< per frame; more makes each frame slower to parse and trace
+  /// Also write plate.ini, plate.pov and environment.inc as the preview exporter does: scene.inc
+  /// then draws textures/environment_plate.png when it is there at width×height, and otherwise
+  /// includes environment.inc. Each frame says which in its log (#debug): "raintrace:
+  /// environment plate used" or "raintrace: full environment".
+  bool plate = false;
 };
 
 /// Creates (replacing) dir with the folder; each frame is a different, deterministic scene.
