@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "povgen/manifest.h"
+#include "povgen/output_folder.h"
 #include "render/image_check.h"
 #include "render/povray_command.h"
 #include "render/process.h"
@@ -24,16 +25,6 @@ std::string read_text(const std::filesystem::path& path) {
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
-}
-
-void write_atomically(const std::filesystem::path& path, const std::string& text) {
-  const auto temp = path.parent_path() / ("." + path.filename().string() + ".tmp");
-  {
-    std::ofstream out{temp, std::ios::binary | std::ios::trunc};
-    out << text;
-    if (!out.flush()) throw std::runtime_error("cannot write " + temp.string());
-  }
-  std::filesystem::rename(temp, path);
 }
 
 bool plate_is_current(const std::filesystem::path& out, int width, int height,
@@ -133,7 +124,7 @@ void EnvironmentPlate::finish(int exit_code) {
   }
   std::filesystem::create_directories((m_out / kPlateImage).parent_path());
   std::filesystem::rename(temp, m_out / kPlateImage);
-  write_atomically(m_out / kPlateSidecar, m_inputs_hash + "\n");
+  povgen::write_file_atomic(m_out / kPlateSidecar, m_inputs_hash + "\n");
 }
 
 void EnvironmentPlate::fail(std::string reason) {

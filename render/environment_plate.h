@@ -10,6 +10,8 @@
 #include <memory>
 #include <string>
 
+#include "povgen/scene_files.h"
+
 namespace raintrace::render {
 
 class ChildProcess;
@@ -17,7 +19,7 @@ class ChildProcess;
 /// The plate image and the hash of the inputs it was made from, relative to the output folder.
 /// The sidecar is written only after the image is in place, so a plate without a matching
 /// sidecar is never trusted.
-inline constexpr const char* kPlateImage = "textures/environment_plate.png";
+inline constexpr const char* kPlateImage = povgen::kEnvironmentPlate;
 inline constexpr const char* kPlateSidecar = "textures/environment_plate.inputs";
 inline constexpr const char* kPlateLog = "logs/environment_plate.log";
 
