@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Render throughput of `raintrace render` (simulate + export + POV-Ray), the paper's Table 1:
-#   1. frames/s at 2k/5k/10k/15k drops, 320×240 preview, for --jobs 1, 2, 3 (best marked);
-#   2. frames/hour for examples/default.toml at 640×360 preview and 1280×720 final, best --jobs.
+#   1. frames/s at 2k/5k/10k/15k drops, 320×240 preview, for --jobs 1, 2, 3, 4 (best marked);
+#   2. the top row again without the environment plate ([export] environment_plate = false);
+#   3. frames/hour for examples/default.toml at 640×360 preview and 1280×720 final, best --jobs.
 # Each row also gives the run's own CPU share: user + system seconds of raintrace and every
 # POV-Ray it ran, over wall seconds × cores (100 % = all cores busy with this run alone).
 # Run it on a quiet machine: other work on the cores shows up directly in the numbers.
@@ -73,7 +74,7 @@ for n in "${counts[@]}"; do
   scene=$(scene_for "$n")
   actual=$("$exe" simulate "$scene" --frames 1 --stats - 2>/dev/null |
            sed -n 's/.*"count": *\([0-9]*\).*/\1/p' | head -1)
-  for jobs in 1 2 3; do
+  for jobs in 1 2 3 4; do
     line=$(run "${n} drops (${actual:-?} sim), --jobs $jobs" "$frames" -- "$scene" \
                -o "$work/out_${n}_$jobs" --jobs "$jobs")
     echo "$line"
@@ -84,6 +85,14 @@ for n in "${counts[@]}"; do
   done
 done
 echo "best --jobs at ${counts[-1]} drops: $best_jobs ($best_fps frames/s; target >= 5)"
+
+# The same top row with every frame tracing the whole environment ([export] environment_plate =
+# false): what the preview's environment plate is worth.
+n=${counts[-1]}
+noplate=$work/drops_${n}_noplate.toml
+{ cat "$(scene_for "$n")"; printf '[export]\nenvironment_plate = false\n'; } >"$noplate"
+run "${n} drops, no plate, --jobs $best_jobs" "$frames" -- "$noplate" -o "$work/out_noplate" \
+  --jobs "$best_jobs"
 
 # The default example as users render it: its own 640×360 preview, then 1280×720 final.
 default=$root/examples/default.toml
