@@ -386,7 +386,7 @@ Command register_render_command(CLI::App& app) {
   sub->add_option("-o,--output", args->out, "Output folder (created; reused to resume)");
   sub->add_option("--frames", args->frames, "Frame range A-B or one frame N (default: all)");
   sub->add_option("--jobs", args->jobs,
-                  "POV-Ray processes in flight (default: cores/2 + 2, i.e. 3 on 2 cores)")
+                  "POV-Ray processes in flight (default: cores/2 + 3, i.e. 4 on 2 cores)")
       ->check(CLI::Range(1, 256));
   sub->add_option("--width", args->width, "Image width in pixels (overrides the scene)")
       ->check(CLI::Range(16, 8192));

@@ -93,7 +93,7 @@ int frame_digits(const povgen::Manifest& manifest) {
 
 int default_jobs() {
   const int cores = static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
-  return cores / 2 + 2;
+  return cores / 2 + 3;
 }
 
 }  // namespace raintrace::render

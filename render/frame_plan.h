@@ -64,10 +64,12 @@ class StreamingSpans {
 /// 4 when there are no frames.
 int frame_digits(const povgen::Manifest& manifest);
 
-/// Default number of POV-Ray processes in flight: cores/2 + 2 (3 on 2 cores). Parsing is
-/// single-threaded and each process also idles between frames in POV-Ray's own polling loops,
-/// so on 2 cores 3 processes beat 2 at every drop count measured (BENCHMARKS.md: 4.24 vs 3.57
-/// frames/s at 2 k drops, 3.33 vs 3.23 at 15 k); more grows memory with little gain.
+/// Default number of POV-Ray processes in flight: cores/2 + 3 (4 on 2 cores). Parsing is
+/// single-threaded and each process also idles ~0.24 s per frame in POV-Ray's own polling
+/// loops, whatever the frame costs: the cheaper the frames, the more processes it takes to keep
+/// the cores busy. With preview frames drawing the environment plate, 4 beat 3 on 2 cores at
+/// every drop count (BENCHMARKS.md: 6.79 vs 6.19 frames/s at 15 k, 8.08 vs 7.10 at 2 k); for
+/// expensive frames (fog, final) 4 and 3 are within the noise.
 int default_jobs();
 
 }  // namespace raintrace::render
