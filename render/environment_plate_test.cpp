@@ -48,12 +48,7 @@ TEST(EnvironmentPlate, InputsHashFollowsEachPlateInputButNotTheFrames) {
   EXPECT_NE(environment_plate_inputs_hash(dir), previous);
 }
 
-class PovrayEnvironmentPlate : public ::testing::Test {
- protected:
-  void SetUp() override {
-    if (!find_program("povray")) GTEST_SKIP() << "POV-Ray not installed (apt-get install povray)";
-  }
-};
+class PovrayEnvironmentPlate : public testing::PovrayTest {};
 
 TEST_F(PovrayEnvironmentPlate, RendersThePlateAndItsSidecarThenTrustsThem) {
   const auto dir = testing::fresh_test_dir("plate_direct");

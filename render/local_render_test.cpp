@@ -56,12 +56,7 @@ void expect_every_frame_log_says(const std::filesystem::path& dir, const std::st
   EXPECT_GT(logs, 0);
 }
 
-class PovrayLocalRender : public ::testing::Test {
- protected:
-  void SetUp() override {
-    if (!find_program("povray")) GTEST_SKIP() << "POV-Ray not installed (apt-get install povray)";
-  }
-};
+class PovrayLocalRender : public testing::PovrayTest {};
 
 TEST_F(PovrayLocalRender, RendersEveryFrameToAValidImageAndRecordsItInTheManifest) {
   const auto dir = testing::fresh_test_dir("all");

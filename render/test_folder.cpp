@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "povgen/manifest.h"
+#include "render/process.h"
 
 namespace raintrace::render::testing {
 namespace {
@@ -142,5 +143,7 @@ std::filesystem::path fresh_test_dir(const std::string& name) {
   std::filesystem::create_directories(dir);
   return dir;
 }
+
+bool system_has_povray() { return find_program("povray").has_value(); }
 
 }  // namespace raintrace::render::testing

@@ -3,6 +3,7 @@
 // tested without the simulator or the exporter.
 #pragma once
 
+#include <gtest/gtest.h>
 #include <filesystem>
 #include <string>
 
@@ -25,6 +26,17 @@ void write_test_folder(const std::filesystem::path& dir, const TestFolderSpec& s
 
 /// Rewrites one frame's .pov with `text` and updates its input_hash in manifest.json.
 void replace_frame(const std::filesystem::path& dir, int frame, const std::string& text);
+
+/// True when `povray` is in PATH.
+bool system_has_povray();
+
+/// Tests that run the real POV-Ray: skipped, with the install command, where it is missing.
+class PovrayTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!system_has_povray()) GTEST_SKIP() << "POV-Ray not installed (apt-get install povray)";
+  }
+};
 
 /// A fresh empty folder under the system temp dir, named after the running test.
 std::filesystem::path fresh_test_dir(const std::string& name);
