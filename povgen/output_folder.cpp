@@ -91,18 +91,18 @@ std::string write_shared_files(const std::filesystem::path& out_dir, const Expor
     all += '\0';
     all += bytes;
   };
-  emit("scene.inc", scene_inc_text(look));
+  emit(kSceneInclude, scene_inc_text(look));
   emit("scene.pov", dispatcher_text("frame", digits));
   emit("scene.ini", ini_text(look, frame_count, "frame", "scene.pov"));
   emit(kEnvironmentInclude, environment_text(look.environment, scene_dir));
   emit(kMaterialsInclude, materials_template());
   if (environment_plate_applies(look)) {
-    emit("plate.pov", plate_pov_text());
-    emit("plate.ini", plate_ini_text(look));
+    emit(kPlatePov, plate_pov_text());
+    emit(kPlateIni, plate_ini_text(look));
   } else {
     // Left by an earlier export into this folder: render/ takes plate.ini as asking for a plate.
-    std::filesystem::remove(out_dir / "plate.pov");
-    std::filesystem::remove(out_dir / "plate.ini");
+    std::filesystem::remove(out_dir / kPlatePov);
+    std::filesystem::remove(out_dir / kPlateIni);
   }
   if (look.mask) {
     emit("mask.pov", dispatcher_text("mask", digits));

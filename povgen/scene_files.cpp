@@ -137,7 +137,7 @@ std::string plate_ini_text(const ExportParams& look) {
       "; textures/environment_plate.png. Render it before scene.ini: every frame then draws this\n"
       "; picture behind the rain instead of ray tracing the environment again. Without it the\n"
       "; frames trace the whole environment themselves (the same scene, only slower).\n";
-  text += "Input_File_Name=plate.pov\n";
+  text += std::string{"Input_File_Name="} + kPlatePov + "\n";
   text += std::string{"Output_File_Name="} + kEnvironmentPlate + "\n";
   text += "Output_File_Type=N\nOutput_Alpha=off\n";
   text += "Width=" + std::to_string(look.width) + "\nHeight=" + std::to_string(look.height) + "\n";

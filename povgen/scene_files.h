@@ -14,6 +14,9 @@ inline constexpr const char* kEnvironmentInclude = "environment.inc";
 inline constexpr const char* kMaterialsInclude = "raintrace_materials.inc";
 inline constexpr const char* kStreakAtlas = "textures/streak_atlas.png";
 inline constexpr const char* kEnvironmentPlate = "textures/environment_plate.png";
+inline constexpr const char* kSceneInclude = "scene.inc";
+inline constexpr const char* kPlateIni = "plate.ini";
+inline constexpr const char* kPlatePov = "plate.pov";
 
 /// scene.inc for these params. Checks the params POV-Ray text depends on (finite numbers,
 /// image size in [16, 8192], a built-in environment name unless an include is used) and throws

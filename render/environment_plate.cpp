@@ -39,8 +39,8 @@ bool plate_is_current(const std::filesystem::path& out, int width, int height,
 
 std::string environment_plate_inputs_hash(const std::filesystem::path& out_dir) {
   povgen::ContentHasher hasher;
-  for (const char* name :
-       {"plate.ini", "plate.pov", "scene.inc", "environment.inc", "raintrace_materials.inc"}) {
+  for (const char* name : {povgen::kPlateIni, povgen::kPlatePov, povgen::kSceneInclude,
+                           povgen::kEnvironmentInclude, povgen::kMaterialsInclude}) {
     // Name and length frame each file's bytes, so moving text between files changes the hash.
     hasher.update(name);
     std::error_code ec;
@@ -58,7 +58,7 @@ std::string environment_plate_inputs_hash(const std::filesystem::path& out_dir) 
 EnvironmentPlate::EnvironmentPlate(std::filesystem::path out_dir, int width, int height,
                                    const std::atomic<bool>* stop)
     : m_out{std::move(out_dir)}, m_width{width}, m_height{height}, m_stop{stop} {
-  if (!std::filesystem::exists(m_out / "plate.ini")) {
+  if (!std::filesystem::exists(m_out / povgen::kPlateIni)) {
     m_done = true;
     return;
   }

@@ -5,6 +5,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "povgen/scene_files.h"
+
 namespace raintrace::render {
 
 namespace {
@@ -41,8 +43,10 @@ std::string environment_plate_temp_name() { return temp_dir_name() + "/environme
 
 std::vector<std::string> environment_plate_argv() {
   // +O overrides plate.ini's Output_File_Name: the plate reaches its final name only verified.
-  return {"povray", "plate.ini", "-D",  "+FN",
-          "-V",     "-GR",       "+L.", "+O" + environment_plate_temp_name()};
+  return {"povray", povgen::kPlateIni,
+          "-D",     "+FN",
+          "-V",     "-GR",
+          "+L.",    "+O" + environment_plate_temp_name()};
 }
 
 std::map<std::string, std::string> povray_env(const std::filesystem::path& out_dir) {
