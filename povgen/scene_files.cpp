@@ -74,8 +74,9 @@ std::string fog_text(const FogParams& fog, const sim::Camera& camera) {
 // of the plate's matching pixel. Falls back to the full environment when the plate is missing
 // or of another size (rendered by hand at another resolution), during lightning (the flash
 // lights the scenery; bolts pass behind buildings) and when rendering the plate itself.
-std::string environment_with_plate_text(const ExportParams& look) {
-  const double aspect = static_cast<double>(look.width) / look.height;
+// aspect: the camera's right/up, as written in its camera statement; RT_CameraPosition is
+// declared before this text.
+std::string environment_with_plate_text(const ExportParams& look, const std::string& aspect) {
   const std::string plate{kEnvironmentPlate};
   std::string text;
   text += "#ifndef(RT_NoPlate) #declare RT_NoPlate=0; #end\n";
@@ -91,8 +92,7 @@ std::string environment_with_plate_text(const ExportParams& look) {
   text += "#if(RT_LightsOnly)\n";
   // Far beyond any rain or bolt, so everything the frame adds stands in front of it.
   text += "#declare RT_PlateDistance=10000;\n";
-  text += "#declare RT_PlateDir=vnormalize(" + vec(look.camera.look_at) + "-" +
-          vec(look.camera.position) + ");\n";
+  text += "#declare RT_PlateDir=vnormalize(" + vec(look.camera.look_at) + "-RT_CameraPosition);\n";
   // POV-Ray's own look_at basis: right = sky × direction, up = direction × right.
   text += "#declare RT_PlateRight=vnormalize(vcross(y,RT_PlateDir));\n";
   text += "#declare RT_PlateUp=vcross(RT_PlateDir,RT_PlateRight);\n";
@@ -102,13 +102,12 @@ std::string environment_with_plate_text(const ExportParams& look) {
   // Emission 1 and nothing else: the plate's pixels come out as they went in.
   text += " texture{pigment{RT_Plate} finish{ambient 0 diffuse 0 emission 1}}\n";
   text += " no_shadow no_reflection\n";
-  text += " translate<-0.5,-0.5,0> scale<RT_PlateWidth,RT_PlateWidth/" + format_number(aspect) +
+  text += " translate<-0.5,-0.5,0> scale<RT_PlateWidth,RT_PlateWidth/" + aspect +
           ",1> translate<0,0,RT_PlateDistance>\n";
   text +=
       " matrix<RT_PlateRight.x,RT_PlateRight.y,RT_PlateRight.z,RT_PlateUp.x,RT_PlateUp.y,"
-      "RT_PlateUp.z,RT_PlateDir.x,RT_PlateDir.y,RT_PlateDir.z," +
-      format_number(look.camera.position.x) + "," + format_number(look.camera.position.y) + "," +
-      format_number(look.camera.position.z) + ">}\n";
+      "RT_PlateUp.z,RT_PlateDir.x,RT_PlateDir.y,RT_PlateDir.z,0,0,0>\n translate "
+      "RT_CameraPosition}\n";
   text += "#end\n";
   return text;
 }
@@ -147,7 +146,7 @@ std::string plate_ini_text(const ExportParams& look) {
 
 std::string scene_inc_text(const ExportParams& look) {
   check_params(look);
-  const double aspect = static_cast<double>(look.width) / look.height;
+  const std::string aspect = format_number(static_cast<double>(look.width) / look.height);
   std::string text;
   text +=
       "// raintrace scene.inc: camera, lights, environment and materials shared by every frame.\n"
@@ -165,7 +164,7 @@ std::string scene_inc_text(const ExportParams& look) {
   // levels leave black specks where rain is dense.
   text += "global_settings{assumed_gamma 1.0 max_trace_level 32 adc_bailout 0.004}\n";
   text += "camera{perspective location " + vec(look.camera.position) + " look_at " +
-          vec(look.camera.look_at) + " right x*" + format_number(aspect) + " up y angle " +
+          vec(look.camera.look_at) + " right x*" + aspect + " up y angle " +
           format_number(look.camera.fov_deg) + "}\n";
   text += "#declare RT_LightningLight=" + format_number(look.lightning_light) + ";\n";
   text += "#declare RT_CameraPosition=" + vec(look.camera.position) + ";\n";
@@ -173,7 +172,7 @@ std::string scene_inc_text(const ExportParams& look) {
   text += "#if(RT_Mask)\nbackground{rgb 0}\n#else\n";
   text += "#declare RT_KeyLight=1;\n";
   if (environment_plate_applies(look)) {
-    text += environment_with_plate_text(look);
+    text += environment_with_plate_text(look, aspect);
   } else {
     text += "#include \"" + std::string{kEnvironmentInclude} + "\"\n";
   }
