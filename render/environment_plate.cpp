@@ -102,8 +102,11 @@ bool EnvironmentPlate::poll() {
   return m_done;
 }
 
-void EnvironmentPlate::wait() {
-  while (!poll()) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+void EnvironmentPlate::wait(const std::function<void()>& on_tick) {
+  while (!poll()) {
+    if (on_tick) on_tick();
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
 }
 
 void EnvironmentPlate::finish(int exit_code) {

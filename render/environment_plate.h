@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -47,8 +48,8 @@ class EnvironmentPlate {
   /// kPlateImage with its sidecar; otherwise kPlateImage does not exist.
   bool poll();
   /// Blocks (polling every 20 ms) until poll() is true; a stop request ends POV-Ray and finishes
-  /// as interrupted.
-  void wait();
+  /// as interrupted. on_tick, when given, is called at each poll (progress displays).
+  void wait(const std::function<void()>& on_tick = {});
 
   /// True when this object started POV-Ray (the plate was missing or stale).
   [[nodiscard]] bool started() const { return m_started; }

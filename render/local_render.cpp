@@ -295,10 +295,7 @@ RenderSummary render_local(const std::filesystem::path& out_dir,
   report();
   if (!queue.empty()) {
     EnvironmentPlate plate{out_dir, runner.width, runner.height, settings.stop};
-    while (!plate.poll()) {  // plate.wait(), with the progress display kept alive
-      report();
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    }
+    plate.wait(report);  // keeps the progress display alive
     if (plate.interrupted()) {
       summary.interrupted = true;
       return summary;
