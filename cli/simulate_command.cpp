@@ -49,7 +49,8 @@ drops {count, mean_diameter_mm, number_density_per_m3},
 rain_rate_mm_per_h {configured, measured_at_ground}, fall_speed_by_diameter (0.1 mm bins)
 [{diameter_min_mm, diameter_max_mm, mean_diameter_mm, speed_m_per_s, speed_sd_m_per_s,
 samples}], horizontal_velocity_m_per_s [x, z], horizontal_motion_by_frame
-[{time_s, drop_velocity_m_per_s [x, z], wind_m_per_s [x, z]}], splashes,
+[{time_s, drop_velocity_m_per_s [x, z], drop_velocity_sd_m_per_s [x, z],
+wind_m_per_s [x, z]}], splashes,
 lightning {strikes, segments}, plus scene, seed, frame_range, time_s, raintrace_version.
 Exit codes: 0 done, 2 bad scene file or option.)";
 
@@ -110,6 +111,8 @@ nlohmann::json statistics_json(const sim::Statistics& stats, const Scene& scene,
     motion.push_back(
         {{"time_s", m.time_s},
          {"drop_velocity_m_per_s", {m.drop_velocity_m_per_s[0], m.drop_velocity_m_per_s[1]}},
+         {"drop_velocity_sd_m_per_s",
+          {m.drop_velocity_sd_m_per_s[0], m.drop_velocity_sd_m_per_s[1]}},
          {"wind_m_per_s", {m.wind_m_per_s[0], m.wind_m_per_s[1]}}});
   }
   return {

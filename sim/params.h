@@ -50,6 +50,12 @@ struct WindParams {
   double gust_strength = 20.0;
   /// Horizontal direction the gusts push along (normalised; y ignored). Default (1, 0, 0).
   glm::dvec3 gust_direction{1.0, 0.0, 0.0};
+  /// Time scale of the gusts, seconds, in [0.1, 600]: the gust wind at time t is
+  /// gust_strength·w(2t / gust_period_s), so one whole pattern of eq. 5 (which repeats every
+  /// 2 s as printed) takes gust_period_s. 2 is the paper's equation as printed: a 12.5 Hz
+  /// flutter that drag filters out of the drops. Default 20: swells over seconds, with a 1.6 s
+  /// flutter inside them.
+  double gust_period_s = 20.0;
   /// Amplitude of smooth spatial turbulence, m/s, in [0, 30]. Default 0 (off).
   double turbulence_m_per_s = 0.0;
   /// Length scale of the turbulence, metres, in [0.1, 100]. Default 4.

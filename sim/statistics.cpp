@@ -28,11 +28,17 @@ void StatisticsCollector::add(const Frame& frame) {
   }
   double frame_vx = 0.0;
   double frame_vz = 0.0;
+  double frame_vx2 = 0.0;
+  double frame_vz2 = 0.0;
   for (std::size_t i = 0; i < drops.size(); ++i) {
     const double d_mm = static_cast<double>(drops.diameter[i]) * kMmPerM;
     m_diameter_sum_mm += d_mm;
-    frame_vx += static_cast<double>(drops.velocity[i].x);
-    frame_vz += static_cast<double>(drops.velocity[i].z);
+    const auto vx = static_cast<double>(drops.velocity[i].x);
+    const auto vz = static_cast<double>(drops.velocity[i].z);
+    frame_vx += vx;
+    frame_vz += vz;
+    frame_vx2 += vx * vx;
+    frame_vz2 += vz * vz;
     // Bin b holds [b·w, (b + 1)·w); the last one also everything larger.
     const int bin =
         std::clamp(static_cast<int>(std::floor(d_mm * kSpeedBinsPerMm)), 0, kSpeedBinCount - 1);
@@ -48,7 +54,11 @@ void StatisticsCollector::add(const Frame& frame) {
   motion.time_s = frame.time_s;
   if (drops.size() > 0) {
     const auto n = static_cast<double>(drops.size());
-    motion.drop_velocity_m_per_s = {frame_vx / n, frame_vz / n};
+    const double mx = frame_vx / n;
+    const double mz = frame_vz / n;
+    motion.drop_velocity_m_per_s = {mx, mz};
+    motion.drop_velocity_sd_m_per_s = {std::sqrt(std::max(0.0, frame_vx2 / n - mx * mx)),
+                                       std::sqrt(std::max(0.0, frame_vz2 / n - mz * mz))};
   }
   motion.wind_m_per_s = {frame.wind_m_per_s.x, frame.wind_m_per_s.z};
   m_motion.push_back(motion);

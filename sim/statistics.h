@@ -40,6 +40,10 @@ struct FrameMotion {
   double time_s = 0.0;  ///< simulated time of the frame, s
   /// Mean horizontal velocity of the drops in view [x, z], m/s (0 without drops).
   std::array<double, 2> drop_velocity_m_per_s{0.0, 0.0};
+  /// Standard deviation of the drops' horizontal velocity [x, z] across the drops in view,
+  /// m/s: how differently drops move at one instant (turbulence, drop sizes responding at
+  /// different speeds to a changing wind).
+  std::array<double, 2> drop_velocity_sd_m_per_s{0.0, 0.0};
   /// Wind at the camera's look_at point [x, z], m/s (steady + gusts + turbulence there).
   std::array<double, 2> wind_m_per_s{0.0, 0.0};
 };

@@ -53,8 +53,10 @@ TEST(Statistics, AveragesDropsAndBinsFallSpeeds) {
   // Frame by frame: the drops' mean horizontal velocity, and the wind at look_at.
   ASSERT_EQ(s.motion.size(), 2u);
   EXPECT_DOUBLE_EQ(s.motion[0].time_s, 0.5);
-  EXPECT_DOUBLE_EQ(s.motion[0].drop_velocity_m_per_s[0], 2.0);  // (1 + 3) / 2
-  EXPECT_DOUBLE_EQ(s.motion[0].drop_velocity_m_per_s[1], 1.0);  // (0 + 2) / 2
+  EXPECT_DOUBLE_EQ(s.motion[0].drop_velocity_m_per_s[0], 2.0);       // (1 + 3) / 2
+  EXPECT_DOUBLE_EQ(s.motion[0].drop_velocity_m_per_s[1], 1.0);       // (0 + 2) / 2
+  EXPECT_NEAR(s.motion[0].drop_velocity_sd_m_per_s[0], 1.0, 1e-12);  // 1 and 3 around 2
+  EXPECT_NEAR(s.motion[0].drop_velocity_sd_m_per_s[1], 1.0, 1e-12);  // 0 and 2 around 1
   EXPECT_DOUBLE_EQ(s.motion[1].drop_velocity_m_per_s[0], 2.0);
 }
 
