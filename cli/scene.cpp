@@ -101,6 +101,7 @@ void read_wind(TableReader r, sim::WindParams& wind) {
     }
     wind.gust_direction = {direction.x / horizontal, 0.0, direction.z / horizontal};
   }
+  r.read_number("gust_period_s", wind.gust_period_s, Range::closed(0.1, 600.0));
   r.read_number("turbulence_m_per_s", wind.turbulence_m_per_s, Range::closed(0.0, 30.0));
   r.read_number("turbulence_scale_m", wind.turbulence_scale_m, Range::closed(0.1, 100.0));
   r.finish();
@@ -206,6 +207,7 @@ Scene load_scene_string(std::string_view toml_text, const std::string& source_na
 
   scene.sim.camera.aspect = static_cast<double>(scene.look.width) / scene.look.height;
   scene.look.camera = scene.sim.camera;
+  scene.look.rain = scene.sim.rain;
   return scene;
 }
 

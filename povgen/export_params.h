@@ -7,6 +7,7 @@
 #include <string>
 
 #include "sim/camera.h"
+#include "sim/params.h"
 
 namespace raintrace::povgen {
 
@@ -48,6 +49,12 @@ enum class Quality {
 
 struct ExportParams {
   sim::Camera camera;
+  /// The rain as simulated (cli/ copies it from the scene, like the camera): its drop sizes and
+  /// rate give the rain medium beyond rain.far_m (rain_medium_text()).
+  sim::RainParams rain;
+  /// Continue the rain beyond rain.far_m as a participating medium whose extinction and
+  /// scattering follow from the drops (docs/rain-appearance.md). Default true.
+  bool rain_medium = true;
   /// Image size in pixels, each in [16, 8192]. Default 640×360.
   int width = 640;
   int height = 360;
@@ -57,16 +64,18 @@ struct ExportParams {
   /// Drops nearer than this are refractive spheres, farther ones streak quads, metres, >= 0.
   /// Default 3.
   double sphere_distance_m = 3.0;
-  /// Level of detail for far rain, as a share of one pixel, in [0, 1]. A streak's coverage is
-  /// the share of a pixel's light its drop would block: opacity × drop width / pixel width
-  /// (× length / pixel when shorter than a pixel). A streak below this coverage adds a barely
-  /// measurable tint to its pixels yet costs POV-Ray a ray hit per pixel it crosses, so it is
-  /// kept with probability coverage / min_streak_coverage (keyed by the drop's id: the same
-  /// drops stay from frame to frame) and drawn at min_streak_coverage: the expected light of
-  /// the far field is unchanged, carried by fewer, brighter streaks. 0 keeps every streak.
-  /// Default 1: every streak fainter than a full pixel is thinned (the heavy-rain example
-  /// halves its streaks against 0.5 and its mean brightness moves by under 0.3/255).
-  double min_streak_coverage = 1.0;
+  /// Level of detail for streaks, in [0, 1]. A streak's coverage is the share of its pixels'
+  /// light its drop replaces: the share of the exposure the drop spends on each point of the
+  /// streak (its size / its travel, Garg & Nayar 2006) × its width / a pixel when narrower.
+  /// A streak below this coverage adds a barely measurable tint to its pixels yet costs
+  /// POV-Ray a ray hit per pixel it crosses, so it is kept with probability
+  /// coverage / min_streak_coverage (keyed by the drop's id: the same drops stay from frame to
+  /// frame) and drawn at min_streak_coverage: the expected light is unchanged, carried by fewer,
+  /// brighter streaks. 0 keeps every streak (at least the atlas's faintest row, ~2^−13, is
+  /// always applied the same way). Default 0.003: a 1 mm drop 5 m away at 640 px (coverage
+  /// ~1e-3) is kept one time in three; the picture keeps the fine veil of every streak
+  /// (docs/rain-appearance.md compares 0, 0.003 and 0.01) at 45 % of its cost.
+  double min_streak_coverage = 0.003;
   /// Level of detail for splashes: the share of splash droplets written, in (0, 1]. Each
   /// droplet is kept or dropped by a key made of what stays constant over its flight (its
   /// horizontal velocity and size), so a droplet never blinks in and out; the survivors are

@@ -8,6 +8,7 @@
 
 #include "povgen/frame_text.h"
 #include "povgen/number_format.h"
+#include "povgen/rain_look.h"
 #include "povgen/templates.h"
 
 namespace raintrace::povgen {
@@ -168,7 +169,7 @@ std::string scene_inc_text(const ExportParams& look) {
           format_number(look.camera.fov_deg) + "}\n";
   text += "#declare RT_LightningLight=" + format_number(look.lightning_light) + ";\n";
   text += "#declare RT_CameraPosition=" + vec(look.camera.position) + ";\n";
-  text += "#include \"" + std::string{kMaterialsInclude} + "\"\n";
+  text += "#ifndef(RT_LightsOnly) #declare RT_LightsOnly=0; #end\n";
   text += "#if(RT_Mask)\nbackground{rgb 0}\n#else\n";
   text += "#declare RT_KeyLight=1;\n";
   if (environment_plate_applies(look)) {
@@ -176,12 +177,28 @@ std::string scene_inc_text(const ExportParams& look) {
   } else {
     text += "#include \"" + std::string{kEnvironmentInclude} + "\"\n";
   }
+  // The light of the surroundings that a drop refracts (docs/rain-appearance.md): declared by
+  // the environment; without it the rain shows only the lights it scatters.
+  text += "#ifndef(RT_RainSurround) #declare RT_RainSurround=rgb 0; #end\n";
   text += fog_text(look.fog, look.camera);
+  // The rain medium holds no simulated drop, so the environment plate may hold it exactly:
+  // frames that draw the plate leave it out, and pay nothing for it (traced, it costs 1.3 CPU s
+  // a frame of the default example at 640×360, twice the rest of the frame). At preview without
+  // a plate (fog, closeup, own includes) it is left out (docs/rain-appearance.md); the guard is
+  // POV-Ray's, so Declare=RT_Preview=0 still renders a preview folder as the final scene.
+  const std::string medium = rain_medium_text(look);
+  if (!medium.empty()) {
+    text += environment_plate_applies(look) ? "#if(!RT_LightsOnly)\n" : "#if(!RT_Preview)\n";
+    text += medium + "#end\n";
+  }
   // The flash lights the whole scene from the bolt's top; RT_KeyLight comes from the
   // environment, so lightning_light is relative to its main light.
   text +=
       "#if(RT_Flash>0)\nlight_source{RT_FlashPosition color rgb "
       "RT_Flash*RT_LightningLight*RT_KeyLight*<0.85,0.88,1>}\n#end\n#end\n";
+  // After the environment, which may declare RT_RainSurround for the materials.
+  text += drop_lobes_text();
+  text += "#include \"" + std::string{kMaterialsInclude} + "\"\n";
   return text;
 }
 

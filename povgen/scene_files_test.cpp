@@ -82,7 +82,36 @@ TEST(SceneFiles, SceneIncHasTheCameraAndMaterials) {
   EXPECT_TRUE(contains(inc, "#include \"environment.inc\""));
   EXPECT_TRUE(contains(inc, "#declare RT_LightningLight=8;"));
   EXPECT_FALSE(contains(inc, "fog{"));
-  EXPECT_FALSE(contains(inc, "media{"));
+  // The drop's scattering lobes, declared before the materials that use them.
+  EXPECT_LT(inc.find("#declare RT_DropBrilliance="), inc.find("raintrace_materials.inc"));
+  EXPECT_LT(inc.find("#declare RT_DropLobeBack="), inc.find("raintrace_materials.inc"));
+  // The materials come after the environment, which may declare RT_RainSurround.
+  EXPECT_LT(inc.find("environment.inc"), inc.find("raintrace_materials.inc"));
+}
+
+TEST(SceneFiles, RainMediumStartsWhereTheSimulatedRainEnds) {
+  ExportParams look;
+  look.rain.far_m = 7.0;
+  look.environment_plate = false;
+  const std::string inc = scene_inc_text(look);
+  // 5 mm/h: δ-scaled extinction 3.55e-4 /m (sim/rain_medium.h); HG scattering of a quarter of
+  // it (POV-Ray's light colour is E/π) with extinction 4, and emission of the surroundings.
+  EXPECT_TRUE(contains(inc, "#declare RT_RainExtinction=0.000355"));
+  EXPECT_TRUE(contains(inc, "scattering{5,RT_RainExtinction/4 eccentricity 0.76"));
+  EXPECT_TRUE(contains(inc, " extinction 4}"));
+  EXPECT_TRUE(contains(inc, "emission RT_RainExtinction*RT_RainSurround"));
+  // Camera at z = −5 looking along +z: the half-space z >= 2 (depth 7), within 200 m.
+  EXPECT_TRUE(contains(inc, "sphere{<0,1.6,-5>,200}\n plane{<0,0,-1>,-2}"));
+  EXPECT_TRUE(contains(inc, "#if(!RT_Preview)\n// The rain beyond far_m"));
+  // With the plate it is traced into the plate and left out of the frames that draw it.
+  look.environment_plate = true;
+  EXPECT_TRUE(contains(scene_inc_text(look), "#if(!RT_LightsOnly)\n// The rain beyond far_m"));
+  // No rain, or switched off: no medium.
+  look.rain_medium = false;
+  EXPECT_FALSE(contains(scene_inc_text(look), "media{"));
+  look.rain_medium = true;
+  look.rain.rate_mm_per_h = 0.0;
+  EXPECT_FALSE(contains(scene_inc_text(look), "media{"));
 }
 
 TEST(SceneFiles, FogModes) {
@@ -101,7 +130,7 @@ TEST(SceneFiles, FogModes) {
   EXPECT_TRUE(contains(media, "absorption rgb 0.015"));
   EXPECT_TRUE(contains(media, "jitter 0"));
   look.fog.density_per_m = 0.0;
-  EXPECT_FALSE(contains(scene_inc_text(look), "media{"));
+  EXPECT_FALSE(contains(scene_inc_text(look), "absorption rgb"));
 }
 
 TEST(SceneFiles, EnvironmentPlateOnlyWhereItStandsInFaithfully) {
