@@ -77,6 +77,7 @@ void validate(const SimParams& p) {
   in_range(w.velocity_m_per_s.z, -60.0, 60.0, "wind.velocity_m_per_s[2]");
   in_range(w.gust_strength, 0.0, 500.0, "wind.gust_strength");
   finite(w.gust_direction, "wind.gust_direction");
+  in_range(w.gust_period_s, 0.1, 600.0, "wind.gust_period_s");
   in_range(w.turbulence_m_per_s, 0.0, 30.0, "wind.turbulence_m_per_s");
   in_range(w.turbulence_scale_m, 0.1, 100.0, "wind.turbulence_scale_m");
 
