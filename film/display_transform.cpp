@@ -88,6 +88,9 @@ DisplayTransform::DisplayTransform(const std::filesystem::path& config) {
         "Blender's colour configuration '{}' is missing: install the Debian package blender-data",
         path));
   }
+  // OpenImageIO 2.4's ColorConfig(path) does not fail on a missing file: it records an error
+  // and carries on without the configuration, so the file is checked first. Given a path it
+  // never reads $OCIO, so the user's environment cannot change the pictures.
   m_impl = std::make_unique<Impl>(path);
   OIIO::ColorConfig& cc = m_impl->config;
   const auto need = [&](OIIO::ColorProcessorHandle handle, const std::string& what) {

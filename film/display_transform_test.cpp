@@ -9,6 +9,7 @@
 #include <OpenImageIO/imageio.h>
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -181,6 +182,20 @@ TEST(FilmicConfig, MissingConfigurationNamesTheDebianPackage) {
     EXPECT_NE(message.find("blender-data"), std::string::npos) << message;
     EXPECT_NE(message.find("/nonexistent/blender/config.ocio"), std::string::npos) << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << "one line: " << message;
+  }
+}
+
+TEST(FilmicConfig, TheUsersOcioVariableDoesNotChangeThePicture) {
+  // OpenImageIO reads $OCIO only when given no file; raintrace always names its file.
+  const char* before = std::getenv("OCIO");
+  const std::string saved = before ? before : "";
+  ::setenv("OCIO", "/nonexistent/other.ocio", 1);
+  const DisplayTransform transform;
+  EXPECT_NEAR(display_of(transform, 0.18f), filmic_grey(0.18), kLutTolerance);
+  if (before) {
+    ::setenv("OCIO", saved.c_str(), 1);
+  } else {
+    ::unsetenv("OCIO");
   }
 }
 
