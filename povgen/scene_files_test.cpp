@@ -121,6 +121,9 @@ TEST(SceneFiles, FogModes) {
   look.fog.depth_m = 4.0;
   // distance = 1/density = 20 m: fog reaches 1 − e^-1 there.
   EXPECT_TRUE(contains(scene_inc_text(look), "fog{fog_type 2 distance 20 "));
+  // A flash lights the ground mist too.
+  EXPECT_TRUE(contains(scene_inc_text(look), "+RT_Flash*RT_LightningLight*RT_KeyLight/4*"));
+  EXPECT_FALSE(contains(scene_inc_text(look), "RT_LampHaze"));
   EXPECT_TRUE(contains(scene_inc_text(look), "fog_alt 4 up y}"));
   look.fog.mode = FogMode::media;
   const std::string media = scene_inc_text(look);
@@ -129,6 +132,9 @@ TEST(SceneFiles, FogModes) {
   EXPECT_TRUE(contains(media, "scattering{1,rgb 0.035*"));
   EXPECT_TRUE(contains(media, "absorption rgb 0.015"));
   EXPECT_TRUE(contains(media, "jitter 0"));
+  // Media mist scatters the lamps' light itself: the environment's painted lamp haze is off,
+  // declared before the environment reads it.
+  EXPECT_LT(media.find("#declare RT_LampHaze=0;"), media.find("#include \"environment.inc\""));
   look.fog.density_per_m = 0.0;
   EXPECT_FALSE(contains(scene_inc_text(look), "absorption rgb"));
 }
