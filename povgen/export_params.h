@@ -72,6 +72,10 @@ enum class Quality {
 /// Scene-file names of Quality, in the order of its values.
 inline constexpr std::string_view kQualityNames[] = {"preview", "final"};
 
+/// min_streak_coverage when a scene does not set it: the preview's and the final look's.
+inline constexpr double kPreviewStreakCoverage = 0.01;
+inline constexpr double kFinalStreakCoverage = 0.003;
+
 struct ExportParams {
   sim::Camera camera;
   /// The rain as simulated (cli/ copies it from the scene, like the camera): its drop sizes and
@@ -95,10 +99,10 @@ struct ExportParams {
   /// pixel it crosses, so it is kept with probability coverage / min_streak_coverage (keyed by
   /// the drop's id: the same drops stay from frame to frame) and drawn at min_streak_coverage:
   /// the expected light is unchanged, carried by fewer, brighter streaks. 0 keeps every streak
-  /// (the atlas's floor, ~1.6e-4, is always applied the same way). The default, 0.003, keeps a
-  /// 1 mm drop 5 m away at 640 px (coverage ~1e-3) one time in three; the picture keeps the
-  /// fine veil of every streak (docs/rain-appearance.md compares 0, 0.003 and 0.01).
-  double min_streak_coverage = 0.003;
+  /// (the atlas's floor, ~1.6e-4, is always applied the same way). Not set (−1): 0.003 at
+  /// quality final — the picture keeps the fine veil of every streak at 45 % of its cost — and
+  /// 0.01 at preview, a grainier veil at 20 % (docs/rain-appearance.md compares them).
+  double min_streak_coverage = -1.0;
   /// Level of detail for splashes: the share of splash droplets written. Each
   /// droplet is kept or dropped by a key made of what stays constant over its flight (its
   /// horizontal velocity and size), so a droplet never blinks in and out; the survivors are
@@ -131,8 +135,9 @@ inline constexpr sim::Param<ExportParams> kExportParams[] = {
     sim::choice<&ExportParams::quality>("output", "quality", kQualityNames),
     sim::number("export", "sphere_distance_m", &ExportParams::sphere_distance_m, "m",
                 sim::Range::closed(0, 1000)),
-    sim::number("export", "min_streak_coverage", &ExportParams::min_streak_coverage,
-                "coverage", sim::Range::closed(0, 1)),
+    sim::number("export", "min_streak_coverage", &ExportParams::min_streak_coverage, "coverage",
+                sim::Range::closed(0, 1))
+        .unset_as("automatic"),
     sim::number("export", "splash_keep", &ExportParams::splash_keep, "share",
                 sim::Range::open_closed(0, 1)),
     sim::flag("export", "environment_plate", &ExportParams::environment_plate),

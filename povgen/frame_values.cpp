@@ -229,6 +229,13 @@ glm::vec3 default_flash_position(const ViewFrustum& view) {
 
 }  // namespace
 
+double streak_coverage_threshold(const ExportParams& look) {
+  if (look.min_streak_coverage < 0.0) {
+    return look.quality == Quality::preview ? kPreviewStreakCoverage : kFinalStreakCoverage;
+  }
+  return std::min(look.min_streak_coverage, 1.0);
+}
+
 FrameValues build_frame_values(const sim::Frame& frame, const ExportParams& look,
                                const StreakAtlasLayout& atlas, int threads) {
   FrameValues values;
@@ -246,8 +253,8 @@ void build_frame_values(const sim::Frame& frame, const ExportParams& look, Frame
 
   // The faintest atlas row is the floor of the level of detail: fainter streaks are thinned to
   // it rather than dropped, so no light is lost whatever min_streak_coverage says.
-  const double min_coverage = std::max(std::clamp(look.min_streak_coverage, 0.0, 1.0),
-                                       streak_atlas_faintest_coverage(atlas));
+  const double min_coverage =
+      std::max(streak_coverage_threshold(look), streak_atlas_faintest_coverage(atlas));
   const StreakContext ctx{view, atlas, static_cast<float>(look.camera.exposure_s), look.width,
                           static_cast<float>(min_coverage)};
   const DropContext drops{ctx, frame.drops, static_cast<float>(look.sphere_distance_m)};

@@ -279,6 +279,25 @@ TEST(FrameValues, FaintStreaksAreThinnedButKeepTheirExpectedLight) {
   }
 }
 
+TEST(FrameValues, UnsetLevelOfDetailIsCoarserAtPreviewThanAtFinal) {
+  ExportParams look = default_look();
+  ASSERT_LT(look.min_streak_coverage, 0.0);  // not set
+  look.quality = Quality::preview;
+  EXPECT_EQ(streak_coverage_threshold(look), kPreviewStreakCoverage);
+  look.quality = Quality::final;
+  EXPECT_EQ(streak_coverage_threshold(look), kFinalStreakCoverage);
+  EXPECT_LT(kFinalStreakCoverage, kPreviewStreakCoverage);
+  look.min_streak_coverage = 0.0;  // set: whatever the quality
+  EXPECT_EQ(streak_coverage_threshold(look), 0.0);
+  // The 4000 faint streaks: a preview keeps about a third as many as a final render.
+  look.min_streak_coverage = -1.0;
+  look.quality = Quality::preview;
+  const std::size_t preview = build_frame_values(faint_rain(), look).streaks.size();
+  look.quality = Quality::final;
+  const std::size_t final_count = build_frame_values(faint_rain(), look).streaks.size();
+  EXPECT_NEAR(static_cast<double>(preview) / static_cast<double>(final_count), 0.3, 0.1);
+}
+
 TEST(FrameValues, ThinningKeepsTheSameDropsFromFrameToFrame) {
   // The drops fall 5 cm between frames: coverage hardly changes, so the survivors must be the
   // same drops (no flicker), whatever their order in the frame.

@@ -220,18 +220,20 @@ TEST(PovRayMask, MaskIsRainWhiteOnBlack) {
   ASSERT_EQ(run_povray(dir, "mask.ini"), 0) << log_of(dir);
   const auto px = read_rgb(dir / "images" / "mask_0001.png");
   ASSERT_FALSE(px.empty());
+  // White in proportion to the rain's coverage of each pixel: the share of its light the rain
+  // replaces (faint for far streaks: a drop covers each point of its streak briefly).
   std::size_t black = 0;
-  std::size_t bright = 0;
+  std::size_t rain = 0;
   bool grey = true;
   for (std::size_t i = 0; i < px.size(); i += 3) {
     if (px[i] == 0.0f) ++black;
-    if (px[i] > 0.5f) ++bright;
+    if (px[i] > 0.0f) ++rain;
     grey = grey && px[i] == px[i + 1] && px[i] == px[i + 2];
   }
   const std::size_t pixels = px.size() / 3;
   EXPECT_TRUE(grey) << "mask must be white on black, no colour";
   EXPECT_GT(black, pixels / 2) << "the environment leaked into the mask";
-  EXPECT_GT(bright, 0u) << "no rain in the mask";
+  EXPECT_GT(rain, 0u) << "no rain in the mask";
   fs::remove_all(dir);
 }
 

@@ -81,7 +81,7 @@ TEST(SceneFiles, SceneIncHasTheCameraAndMaterials) {
   EXPECT_TRUE(contains(inc, "#include \"raintrace_materials.inc\""));
   EXPECT_TRUE(contains(inc, "#include \"environment.inc\""));
   EXPECT_TRUE(contains(inc, "#declare RT_LightningLight=8;"));
-  EXPECT_FALSE(contains(inc, "fog{"));
+  EXPECT_FALSE(contains(inc, "fog{fog_type 2"));  // no [fog]
   // The drop's scattering lobes, declared before the materials that use them.
   EXPECT_LT(inc.find("#declare RT_DropBrilliance="), inc.find("raintrace_materials.inc"));
   EXPECT_LT(inc.find("#declare RT_DropLobeBack="), inc.find("raintrace_materials.inc"));
@@ -102,10 +102,14 @@ TEST(SceneFiles, RainMediumStartsWhereTheSimulatedRainEnds) {
   EXPECT_TRUE(contains(inc, "emission RT_RainExtinction*RT_RainSurround"));
   // Camera at z = −5 looking along +z: the half-space z >= 2 (depth 7), within 200 m.
   EXPECT_TRUE(contains(inc, "sphere{<0,1.6,-5>,200}\n plane{<0,0,-1>,-2}"));
-  EXPECT_TRUE(contains(inc, "#if(!RT_Preview)\n// The rain beyond far_m"));
+  // Preview without a plate: the fog form, capped at 200 m (transmit e^−200σ); final: media.
+  EXPECT_TRUE(contains(inc,
+                       "fog{fog_type 1 distance 1/RT_RainExtinction color rgb "
+                       "RT_RainSurround transmit exp(-200*RT_RainExtinction)}"));
+  EXPECT_TRUE(contains(inc, "#if(RT_Preview)\nRT_RainFog()\n#else\nRT_RainMedium()\n#end\n"));
   // With the plate it is traced into the plate and left out of the frames that draw it.
   look.environment_plate = true;
-  EXPECT_TRUE(contains(scene_inc_text(look), "#if(!RT_LightsOnly)\n// The rain beyond far_m"));
+  EXPECT_TRUE(contains(scene_inc_text(look), "#if(!RT_LightsOnly)\nRT_RainMedium()\n#end\n"));
   // No rain, or switched off: no medium.
   look.rain_medium = false;
   EXPECT_FALSE(contains(scene_inc_text(look), "media{"));

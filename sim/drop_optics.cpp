@@ -59,6 +59,11 @@ DropScattering drop_scattering(double ior, int rays) {
   return out;
 }
 
+const DropScattering& water_drop_scattering() {
+  static const DropScattering water = drop_scattering(kWaterIor, 20000);
+  return water;
+}
+
 PovrayLobes fit_povray_lobes(const DropScattering& s) {
   // A·cos^b θ over the forward hemisphere: ∫ cos^b θ dΩ / 4π = 1 / (2(b + 1)), and its light's
   // mean cosine is (b + 1)/(b + 2).

@@ -73,5 +73,11 @@ TEST(DropOptics, PovrayLobesCarryTheForwardAndBackwardLightWithTheRightShape) {
   }
 }
 
+TEST(DropOptics, TheCachedTwentyThousandRayTraceAgreesWithTheFineOne) {
+  EXPECT_NEAR(water_drop_scattering().asymmetry, water().asymmetry, 1e-3);
+  EXPECT_NEAR(water_drop_scattering().forward_mean_cosine, water().forward_mean_cosine, 1e-3);
+  EXPECT_NEAR(water_drop_scattering().forward_share, water().forward_share, 1e-3);
+}
+
 }  // namespace
 }  // namespace raintrace::sim

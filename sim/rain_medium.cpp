@@ -7,13 +7,12 @@
 namespace raintrace::sim {
 
 RainMediumOptics rain_medium_optics(const RainParams& rain) {
-  // Geometric optics does not depend on the drop's size: one trace serves every scene.
-  static const double kAsymmetry = drop_scattering().asymmetry;
   const DropSizeModel sizes(rain);
   RainMediumOptics optics;
   optics.image_extinction_per_m = sizes.cross_section_per_m();
   optics.extinction_per_m = 2.0 * optics.image_extinction_per_m;
-  optics.eccentricity = kAsymmetry;
+  // Geometric optics does not depend on the drop's size: one trace serves every scene.
+  optics.eccentricity = water_drop_scattering().asymmetry;
   return optics;
 }
 

@@ -43,7 +43,7 @@ TEST(RainMedium, ExtinctionFollowsTheDropSizeDistributionAtTheConfiguredRate) {
 TEST(RainMedium, DeltaScalingKeepsTheGeometricOpticsAsymmetry) {
   // With diffraction (half the extinction, g = 1) the asymmetry is (1 + g_geo)/2; removing the
   // forward peak f = ½ gives (g − f)/(1 − f) = g_geo again (Joseph et al. 1976).
-  const double g_geo = drop_scattering().asymmetry;
+  const double g_geo = water_drop_scattering().asymmetry;
   const double g_total = 0.5 * (1.0 + g_geo);
   EXPECT_NEAR(rain_medium_optics(RainParams{}).eccentricity, (g_total - 0.5) / (1.0 - 0.5), 1e-12);
   EXPECT_NEAR(rain_medium_optics(RainParams{}).eccentricity, 0.77, 0.02);
