@@ -4,9 +4,11 @@
 # direction ω weighted by the drop's phase function P(θ) at the angle θ between ω and the line
 # of sight (sim/drop_optics.h; here Henyey-Greenstein with its asymmetry g = 0.769). This
 # renders the environment of an exported folder around a few points of the rain with POV-Ray's
-# spherical camera and averages it with that weight (oiiotool), lights excluded (they are
-# scattered by the drops' finish, not refracted here).
-# Usage: bench/surround_radiance.sh FOLDER [X Y Z]...
+# spherical camera and averages it with that weight (oiiotool). Lights are left out: they are
+# scattered by the drops' finish from the light_sources, so radiance above CLAMP (default 1.5,
+# more than any lit surface at night or overcast sky by day; a lamp's lens is hundreds) is
+# clamped to it before averaging.
+# Usage: [CLAMP=1.5] bench/surround_radiance.sh FOLDER [X Y Z]...
 #   FOLDER: a folder `raintrace export` wrote (its scene.inc, environment.inc); points in metres,
 #   default three points 2, 5 and 8 m in front of the default camera at heights 0.8, 1.6, 2.6.
 # Prints the mean rgb and each point's.
@@ -44,7 +46,7 @@ camera { spherical angle 360 180 location $p look_at $p + z }
 #include "environment.inc"
 POV
   povray env.pov +W360 +H180 +FE +Oenv.exr -D -V -GA +L. >/dev/null 2>&1
-  oiiotool env.exr weight.exr --mul -o product.exr
+  oiiotool env.exr --clamp:max="${CLAMP:-1.5}" weight.exr --mul -o product.exr
   num=$(oiiotool product.exr --printstats | sed -n 's/.*Stats Avg: *\([0-9.e+-]*\) \([0-9.e+-]*\) \([0-9.e+-]*\).*/\1 \2 \3/p' | head -1)
   den=$(oiiotool weight.exr --printstats | sed -n 's/.*Stats Avg: *\([0-9.e+-]*\).*/\1/p' | head -1)
   rgb=$(awk -v n="$num" -v d="$den" 'BEGIN { split(n, a, " "); printf "%.4f %.4f %.4f", a[1]/d, a[2]/d, a[3]/d }')

@@ -78,7 +78,7 @@ struct WindParams {
   /// Time scale of the gusts: the gust wind at time t is gust_strength·w(2t / gust_period_s),
   /// so one whole pattern of eq. 5 (which repeats every 2 s as printed) takes gust_period_s.
   /// 2 is the paper's equation as printed: a 12.5 Hz flutter that drag filters out of the
-  /// drops. The default, 20, swells over seconds with a 1.6 s flutter inside them.
+  /// drops. The default, 20, swells over 3–20 s with a 0.8 s flutter inside them.
   double gust_period_s = 20.0;
   /// Amplitude (RMS speed) of smooth spatial turbulence; 0: off.
   double turbulence_m_per_s = 0.0;

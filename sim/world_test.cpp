@@ -269,7 +269,7 @@ TEST(World, GustsSwayTheDropsOnlyWhenTheyAreSlowerThanDragCanFollow) {
   // Eq. 5 as printed (a 12.5 Hz flutter of at most ±2 m/s for strength 20) moves the drops'
   // mean by about ±0.1 m/s (a 0.5 mm drop follows a 78.5 rad/s wiggle by 1/(ωτ) ≈ 1/18), because
   // drag lets a drop follow the wind only over its relaxation time v_t/g ≈ 0.2–0.9 s. Stretched to
-  // a 20 s period, the same gusts (flutter now 1.6 s, swells of 5–20 s) carry the drops with them:
+  // a 20 s period, the same gusts (flutter now 0.8 s, swells of 3–20 s) carry the drops with them:
   // a sway of metres per second.
   SimParams p = small_scene();
   p.rain.far_m = 1.5;
