@@ -102,7 +102,8 @@ TEST(PovRayTemplates, EveryEnvironmentAndFogModeRenders) {
 
 TEST(PovRayTemplates, PreviewVariantsRenderAndFinalIsTheSameSceneWithRtPreviewZero) {
   SKIP_WITHOUT_POVRAY();
-  // Same flags for both folders (no antialiasing), so only RT_Preview can tell them apart:
+  // Same flags and the same level of detail for streaks (left unset it differs by quality) for
+  // both folders (no antialiasing), so only RT_Preview can tell them apart:
   // night_street's preview stand-ins change the picture, and a preview folder rendered with
   // Declare=RT_Preview=0 is the final scene pixel for pixel. Ground fog: the light sheets
   // must not hide it.
@@ -110,6 +111,7 @@ TEST(PovRayTemplates, PreviewVariantsRenderAndFinalIsTheSameSceneWithRtPreviewZe
     ExportParams look = tiny_look();
     look.environment.name = environment;
     look.fog.mode = FogMode::ground;
+    look.min_streak_coverage = kFinalStreakCoverage;
     const std::string name = std::string{"quality_"} + environment;
     look.quality = Quality::preview;
     const fs::path preview = make_folder(name + "_preview", look);
