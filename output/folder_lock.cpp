@@ -166,8 +166,7 @@ void require_lock_held_by(const std::filesystem::path& dir, std::string_view run
   const auto holder = lock_holder(dir);
   if (holder && holder->run_id == run_id) return;
   throw std::runtime_error(fmt::format(
-      "{} no longer belongs to the run that submitted this task (run {}): {}", dir.string(),
-      run_id,
+      "{} no longer belongs to the run that submitted this task (run {}): {}", dir.string(), run_id,
       holder ? "it is now used by " + holder->describe() : std::string{"nobody holds it"}));
 }
 

@@ -11,14 +11,16 @@
 #include <stdexcept>
 #include <thread>
 
-#include "povgen/manifest.h"
+#include "output/image_check.h"
+#include "povgen/content_hash.h"
 #include "povgen/output_folder.h"
-#include "render/image_check.h"
 #include "render/povray_command.h"
 #include "render/process.h"
 
 namespace raintrace::render {
 namespace {
+
+using output::image_is_complete;
 
 std::string read_text(const std::filesystem::path& path) {
   std::ifstream in{path, std::ios::binary};

@@ -11,7 +11,7 @@
 #include <thread>
 #include <vector>
 
-#include "render/image_check.h"
+#include "output/image_check.h"
 #include "render/process.h"
 
 namespace raintrace::render {
@@ -118,6 +118,7 @@ class Runner {
   bool stop_requested() const { return m_settings.stop != nullptr && m_settings.stop->load(); }
 
   Running start(const RenderJob& job) {
+    if (m_callbacks.on_started) m_callbacks.on_started(job);
     Running r;
     r.job = job;
     r.argv = povray_argv(job.pass, job.span, m_settings.digits);
@@ -144,7 +145,7 @@ class Runner {
   void promote_ready(Running& r) {
     while (r.next_frame <= r.job.span.last) {
       const auto temp = m_out / temp_image_name(r.job.pass, r.next_frame, m_settings.digits);
-      if (!image_is_complete(temp, m_settings.width, m_settings.height)) return;
+      if (!output::image_is_complete(temp, m_settings.width, m_settings.height)) return;
       const auto final_path = m_out / final_image_name(r.job.pass, r.next_frame, m_settings.digits);
       std::filesystem::create_directories(final_path.parent_path());
       std::filesystem::rename(temp, final_path);
@@ -169,8 +170,9 @@ class Runner {
     failure.error_lines = povray_error_lines(read_text(m_out / r.log));
     if (failure.error_lines.empty()) {
       std::string why;
-      image_is_complete(m_out / temp_image_name(r.job.pass, r.next_frame, m_settings.digits),
-                        m_settings.width, m_settings.height, &why);
+      output::image_is_complete(
+          m_out / temp_image_name(r.job.pass, r.next_frame, m_settings.digits), m_settings.width,
+          m_settings.height, &why);
       failure.error_lines.push_back(
           fmt::format("{}: {}", temp_image_name(r.job.pass, r.next_frame, m_settings.digits), why));
     }

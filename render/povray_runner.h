@@ -33,6 +33,9 @@ struct FrameFailure {
 };
 
 struct RunnerCallbacks {
+  /// POV-Ray is about to start on this job (also on the rest of a failed span). May throw to
+  /// stop the run: running processes are then stopped and nothing further is promoted.
+  std::function<void(const RenderJob& job)> on_started;
   /// A verified image is now at final_image_name(pass, frame).
   std::function<void(Pass pass, int frame, double seconds)> on_rendered;
   std::function<void(const FrameFailure&)> on_failed;

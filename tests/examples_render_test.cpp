@@ -12,8 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "cli/export_pipeline.h"
+#include "cli/folder_run.h"
 #include "cli/scene.h"
+#include "output/export.h"
+#include "output/folder_state.h"
 
 namespace raintrace {
 namespace {
@@ -49,7 +51,12 @@ std::vector<float> export_and_render(cli::Scene scene, const fs::path& dir) {
   scene.sim.prewarm_s = 0.0;
   scene.sim.substep_s = 0.01;
   fs::remove_all(dir);
-  cli::export_scene(scene, cli::FrameRange{1, 1}, dir);
+  {
+    const output::SceneToExport e = cli::scene_to_export(scene);
+    auto folder =
+        output::FolderState::claim(dir, output::identity_of(scene.text, e), false, "test");
+    output::export_frames(folder, e, {1, 1});
+  }
   const std::string command =
       "cd '" + dir.string() + "' && povray scene.ini +SF1 +EF1 -D -V >povray.log 2>&1";
   EXPECT_EQ(std::system(command.c_str()), 0) << "povray failed in " << dir;

@@ -10,14 +10,17 @@
 #include <sstream>
 #include <thread>
 
-#include "povgen/manifest.h"
-#include "render/image_check.h"
+#include "output/image_check.h"
+#include "output/manifest.h"
 #include "render/povray_command.h"
 #include "render/process.h"
 #include "render/test_folder.h"
 
 namespace raintrace::render {
 namespace {
+
+using output::image_is_complete;
+using output::read_manifest;
 
 std::string read_all(const std::filesystem::path& p) {
   std::ifstream in{p};
@@ -50,8 +53,8 @@ Run run_raintrace(const std::vector<std::string>& args, const std::filesystem::p
 int rendered_in_manifest(const std::filesystem::path& dir) {
   try {
     int n = 0;
-    for (const auto& f : povgen::read_manifest(dir / "manifest.json").frames) {
-      n += f.status == "rendered" ? 1 : 0;
+    for (const auto& f : read_manifest(dir / "manifest.json").frames) {
+      n += f.image.status == output::FrameStatus::rendered ? 1 : 0;
     }
     return n;
   } catch (const std::exception&) {
@@ -123,10 +126,10 @@ using FinishedImages = std::map<int, std::filesystem::file_time_type>;
 /// each of those images must be complete.
 FinishedImages finished_images(const std::filesystem::path& out) {
   FinishedImages finished;
-  for (const auto& f : povgen::read_manifest(out / "manifest.json").frames) {
-    if (f.status != "rendered") continue;
-    finished[f.number] = std::filesystem::last_write_time(out / f.image);
-    EXPECT_TRUE(image_is_complete(out / f.image, 64, 36)) << f.image;
+  for (const auto& f : read_manifest(out / "manifest.json").frames) {
+    if (f.image.status != output::FrameStatus::rendered) continue;
+    finished[f.number] = std::filesystem::last_write_time(out / f.image.path);
+    EXPECT_TRUE(image_is_complete(out / f.image.path, 64, 36)) << f.image.path;
   }
   return finished;
 }
@@ -243,14 +246,14 @@ TEST_F(PovrayRenderCli, SceneFileIsExportedWhileRenderingIntoTheSameFilesAsAPlai
     EXPECT_TRUE(image_is_complete(dir / "a" / final_image_name(Pass::image, f), 64, 36)) << f;
   }
   EXPECT_EQ(read_all(dir / "a/scene.inc"), read_all(dir / "c/scene.inc"));
-  const auto manifest = povgen::read_manifest(dir / "a/manifest.json");
-  const auto exported = povgen::read_manifest(dir / "c/manifest.json");
+  const auto manifest = read_manifest(dir / "a/manifest.json");
+  const auto exported = read_manifest(dir / "c/manifest.json");
   ASSERT_EQ(manifest.frames.size(), 6U);
   ASSERT_EQ(exported.frames.size(), 6U);
   for (std::size_t i = 0; i < 6; ++i) {
-    EXPECT_EQ(manifest.frames[i].status, "rendered");
+    EXPECT_EQ(manifest.frames[i].image.status, output::FrameStatus::rendered);
     EXPECT_EQ(manifest.frames[i].input_hash, exported.frames[i].input_hash);
-    EXPECT_EQ(manifest.frames[i].rendered_hash, exported.frames[i].input_hash);
+    EXPECT_EQ(manifest.frames[i].image.rendered_hash, exported.frames[i].input_hash);
   }
   // The same command again: everything is up to date, nothing is ray-traced.
   const auto again = run_raintrace(
