@@ -110,6 +110,8 @@ const char* describe(RenderReason reason) {
       return "failed before";
     case RenderReason::file_missing:
       return "image missing";
+    case RenderReason::file_empty:
+      return "image empty";
     case RenderReason::file_truncated:
       return "image truncated";
     case RenderReason::file_changed:
@@ -385,9 +387,13 @@ RenderReason FolderState::decide(Pass pass, int number, bool force) const {
   if (p->rendered_hash != f->input_hash) return RenderReason::inputs_changed;
   const auto facts = file_facts(m_dir / p->path);
   if (!facts) return RenderReason::file_missing;
-  if (facts->size < p->size) return RenderReason::file_truncated;
-  if (facts->size != p->size || facts->hash != p->file_hash) return RenderReason::file_changed;
-  return RenderReason::up_to_date;
+  if (facts->size == p->size && facts->hash == p->file_hash) return RenderReason::up_to_date;
+  if (facts->size == 0) return RenderReason::file_empty;
+  const auto& id = m_manifest.identity;
+  if (facts->size < p->size && !image_is_complete(m_dir / p->path, id.width, id.height)) {
+    return RenderReason::file_truncated;
+  }
+  return RenderReason::file_changed;
 }
 
 RenderPlan FolderState::plan(const RenderRequest& request) const {

@@ -44,8 +44,9 @@ enum class RenderReason {
   interrupted,     ///< a run stopped (or was killed) while POV-Ray worked on it
   failed_before,   ///< POV-Ray failed on it in an earlier run
   file_missing,    ///< recorded as rendered, but the file is gone
-  file_truncated,  ///< recorded as rendered, but the file is shorter (or empty)
-  file_changed,    ///< recorded as rendered, but the file's bytes are not the ones recorded
+  file_empty,      ///< recorded as rendered, but the file has 0 bytes
+  file_truncated,  ///< shorter than recorded, and no longer a whole image
+  file_changed,    ///< other bytes than recorded (a whole image, or longer)
   forced,          ///< --force
 };
 
@@ -124,7 +125,8 @@ class FolderState {
 
   // --- Decisions -----------------------------------------------------------------------------
 
-  /// The rule above for one picture (reads the file to check it). A frame or mask the manifest
+  /// The rule above for one picture (reads the file to check it; decodes it only when its bytes
+  /// are not the recorded ones, to tell truncated from changed). A frame or mask the manifest
   /// does not have is not_exported.
   [[nodiscard]] RenderReason decide(Pass pass, int number, bool force) const;
   /// decide() over the frames in request.only (all when unset), images and, for a folder

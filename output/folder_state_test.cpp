@@ -186,7 +186,7 @@ TEST(UpToDateRule, ARenderedImageIsUpToDateOnlyWhileItsBytesAreTheRecordedOnes) 
   write(image(4), bytes);
   EXPECT_EQ(folder.decide(Pass::image, 1, false), RenderReason::file_missing);
   EXPECT_EQ(folder.decide(Pass::image, 2, false), RenderReason::file_truncated);
-  EXPECT_EQ(folder.decide(Pass::image, 3, false), RenderReason::file_truncated);
+  EXPECT_EQ(folder.decide(Pass::image, 3, false), RenderReason::file_empty);
   EXPECT_EQ(folder.decide(Pass::image, 4, false), RenderReason::file_changed);
   EXPECT_EQ(folder.decide(Pass::image, 5, false), RenderReason::up_to_date);
   EXPECT_EQ(folder.decide(Pass::image, 5, true), RenderReason::forced);
@@ -195,8 +195,8 @@ TEST(UpToDateRule, ARenderedImageIsUpToDateOnlyWhileItsBytesAreTheRecordedOnes) 
   EXPECT_EQ(plan.images, (std::vector<int>{1, 2, 3, 4}));
   EXPECT_EQ(plan.up_to_date, 1);
   EXPECT_EQ(plan.summary(),
-            "4 to render: 1 image missing, 2 image truncated, 1 image changed; 1 frames up to "
-            "date");
+            "4 to render: 1 image missing, 1 image empty, 1 image truncated, 1 image changed; 1 "
+            "frames up to date");
   // A reopened folder (the next run) sees the same.
   const Manifest saved = folder.manifest();
   EXPECT_EQ(read_manifest(dir / kManifest).frames.at(4).image.file_hash,

@@ -15,6 +15,7 @@
 #include "render/povray_command.h"
 #include "render/process.h"
 #include "render/test_folder.h"
+#include "tests/cli_test_support.h"
 
 namespace raintrace::render {
 namespace {
@@ -22,33 +23,11 @@ namespace {
 using output::image_is_complete;
 using output::read_manifest;
 
-std::string read_all(const std::filesystem::path& p) {
-  std::ifstream in{p};
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-struct Run {
-  int exit_code = 0;
-  std::string output;  // stdout and stderr together, as a log file (not a terminal) gets them
-};
-
-ProcessSpec raintrace_spec(const std::vector<std::string>& args, const std::filesystem::path& log) {
-  ProcessSpec spec;
-  spec.argv = {RAINTRACE_BINARY};
-  spec.argv.insert(spec.argv.end(), args.begin(), args.end());
-  spec.log_path = log;
-  return spec;
-}
-
-Run run_raintrace(const std::vector<std::string>& args, const std::filesystem::path& log) {
-  ChildProcess child{raintrace_spec(args, log)};
-  Run r;
-  r.exit_code = child.wait();
-  r.output = read_all(log);
-  return r;
-}
+using raintrace::clitest::raintrace_spec;
+using raintrace::clitest::read_all;
+using raintrace::clitest::Run;
+using raintrace::clitest::run_raintrace;
+using raintrace::clitest::write_scene;
 
 int rendered_in_manifest(const std::filesystem::path& dir) {
   try {
@@ -200,20 +179,6 @@ TEST_F(PovrayRenderCli, SigintStopsPovrayKeepsFramesAndSaysHowToResume) {
   EXPECT_NE(out.find("interrupted by SIGINT"), std::string::npos) << out;
   EXPECT_NE(out.find("run the same command again to resume"), std::string::npos);
   EXPECT_GE(rendered_in_manifest(dir / "out"), 2);
-}
-
-// A small rain scene (about 1 000 drops in view at 64x36) for runs that export and render.
-std::filesystem::path write_scene(const std::filesystem::path& dir, int frames) {
-  std::filesystem::create_directories(dir);
-  const auto path = dir / "small.toml";
-  std::ofstream{path} << "seed = 7\n[output]\nframes = " << frames
-                      << "\nfps = 24\nwidth = 64\nheight = 36\nquality = \"preview\"\n"
-                         "[camera]\nposition = [0, 1.6, -5]\nlook_at = [0, 1.3, 0]\n"
-                         "fov_deg = 60\nexposure_s = 0.02\n"
-                         "[rain]\nrate_mm_per_h = 5\nnear_m = 0.3\nfar_m = 2.5\n"
-                         "[wind]\nvelocity_m_per_s = [0.8, 0, 0]\n"
-                         "[environment]\nname = \"night_street\"\n";
-  return path;
 }
 
 std::string frame_file(const std::filesystem::path& out, int frame) {
