@@ -27,6 +27,7 @@ struct ExportArgs {
   std::string frames;
   std::optional<std::uint64_t> seed;
   bool force = false;
+  LimitArgs limits;
 };
 
 int run_export(const ExportArgs& args) {
@@ -34,6 +35,7 @@ int run_export(const ExportArgs& args) {
   if (args.seed) scene.sim.seed = *args.seed;
   const FrameRange range = parse_frame_range(args.frames, scene.frames);
   const output::SceneToExport to_export = scene_to_export(scene);
+  check_run_budget(to_export, {range.first, range.last}, 0, args.limits);
   StopSignals signals;
   output::ClaimNote note;
   auto folder = output::FolderState::claim(args.out, output::identity_of(scene.text, to_export),
@@ -81,6 +83,8 @@ Command register_export_command(CLI::App& app) {
       "OUT must be new, empty, or a folder raintrace made from the same scene and settings\n"
       "(seed, size, quality, masks); --force replaces what another scene left there.\n"
       "Ctrl-C stops within a second and keeps the frames written so far.\n"
+      "A scene asking for more memory or simulation than --max-memory/--max-drop-steps allow\n"
+      "stops before anything is written, naming the scene keys to change.\n"
       "Exit codes: 0 done, 2 bad scene file, option or output folder, 3 system error (disk\n"
       "full, permission denied), 4 output folder in use by another raintrace, 130/143 "
       "interrupted.");
@@ -91,6 +95,7 @@ Command register_export_command(CLI::App& app) {
   sub->add_flag("--force", args->force,
                 "Replace a folder made from another scene or with other settings (its frames "
                 "and images are deleted), or write into a non-empty folder raintrace did not make");
+  add_limit_options(*sub, args->limits);
   return {sub, [args] { return run_export(*args); }};
 }
 

@@ -2,7 +2,10 @@
 #include "cli/folder_run.h"
 
 #include <fcntl.h>
+#include <fmt/core.h>
 #include <unistd.h>
+#include <CLI/CLI.hpp>
+#include <stdexcept>
 #include <vector>
 
 #include "render/process.h"
@@ -16,6 +19,33 @@ output::SceneToExport scene_to_export(const Scene& scene) {
   e.frames = scene.frames;
   e.scene_dir = scene.base_dir.empty() ? scene.source.parent_path() : scene.base_dir;
   return e;
+}
+
+void add_limit_options(CLI::App& command, LimitArgs& limits) {
+  command.add_option("--max-memory", limits.max_memory,
+                     "Most memory the run may need, e.g. 8G (default: 4G, or half of this "
+                     "machine's memory if less); the run stops before it starts past it");
+  command
+      .add_option("--max-drop-steps", limits.max_drop_steps,
+                  "Most simulation work, drops x substeps, e.g. 1e13 (default 1e12, about "
+                  "3 hours)")
+      ->check(CLI::PositiveNumber);
+}
+
+void check_run_budget(const output::SceneToExport& scene, output::FrameSpan range,
+                      int povray_processes, const LimitArgs& limits) {
+  output::BudgetLimits l;
+  if (limits.max_drop_steps > 0) l.max_drop_steps = limits.max_drop_steps;
+  if (!limits.max_memory.empty()) {
+    const auto bytes = output::parse_byte_size(limits.max_memory);
+    if (!bytes) {
+      throw std::invalid_argument(
+          fmt::format("--max-memory takes a size such as 8G or 512M, not '{}'",
+                      limits.max_memory.substr(0, 40)));
+    }
+    l.max_memory_bytes = *bytes;
+  }
+  output::check_budget(output::estimate_budget(scene, range, povray_processes), l);
 }
 
 std::string this_command() {

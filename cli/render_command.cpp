@@ -55,6 +55,7 @@ struct RenderArgs {
   int tasks = 0;
   bool no_movie = false;
   std::string slurm_task;
+  LimitArgs limits;
 };
 
 constexpr const char* kFooter = R"(
@@ -80,6 +81,8 @@ the nodes need POV-Ray. Each array task runs `raintrace render --slurm-task OUT`
 OUT must be new, empty, or a folder raintrace made from the same scene and settings (seed,
 size, quality, masks): another scene's folder is refused unless --force, which deletes its
 frames and images first. A second run on the same folder stops at once and says who holds it.
+The memory and simulation work a scene asks for are estimated before anything starts; past
+--max-memory or --max-drop-steps the run stops, naming the scene keys to change.
 Images are checked against the size and content hash recorded when they were made: a missing,
 truncated or changed image is rendered again, and the movie and contact sheet show only
 checked frames.
@@ -211,7 +214,7 @@ struct RenderInput {
   std::optional<render::FrameSpan> only;
 };
 
-RenderInput prepare(const RenderArgs& args) {
+RenderInput prepare(const RenderArgs& args, int povray_processes) {
   RenderInput in;
   const std::filesystem::path input{args.scene};
   if (std::filesystem::is_directory(input)) {
@@ -251,6 +254,7 @@ RenderInput prepare(const RenderArgs& args) {
   in.range = {range.first, range.last};
   in.only = in.range;
   in.scene = scene_to_export(scene);
+  check_run_budget(*in.scene, in.range, povray_processes, args.limits);
   output::ClaimNote note;
   in.folder.emplace(output::FolderState::claim(args.out, output::identity_of(scene.text, *in.scene),
                                                args.force, this_command(), &note));
@@ -265,7 +269,9 @@ int run_render(const RenderArgs& args) {
   }
   if (args.backend == "local") render::require_povray();
   StopSignals signals;
-  RenderInput in = prepare(args);
+  // Slurm: each node runs one POV-Ray per task; this machine only simulates.
+  const int jobs = args.jobs > 0 ? args.jobs : render::default_jobs();
+  RenderInput in = prepare(args, args.backend == "local" ? jobs : 1);
   output::FolderState& folder = *in.folder;
   const std::filesystem::path out = folder.dir();
 
@@ -290,7 +296,7 @@ int run_render(const RenderArgs& args) {
   }
   if (args.backend == "local") {
     render::LocalRenderSettings settings;
-    settings.jobs = args.jobs > 0 ? args.jobs : render::default_jobs();
+    settings.jobs = jobs;
     settings.force = args.force;
     settings.only = in.only;
     settings.stop = &stop_requested();
@@ -387,6 +393,7 @@ Command register_render_command(CLI::App& app) {
   sub->add_option("--tasks", args->tasks, "Slurm array tasks (default: one per ~8 frames)")
       ->check(CLI::Range(1, 10000));
   sub->add_flag("--no-movie", args->no_movie, "Skip the MP4 and GIF");
+  add_limit_options(*sub, args->limits);
   sub->add_option("--slurm-task", args->slurm_task, "Worker mode inside a Slurm array task")
       ->group("");
   return {

@@ -14,6 +14,7 @@
 
 #include "cli/folder_run.h"
 #include "cli/scene.h"
+#include "output/budget.h"
 #include "output/export.h"
 #include "output/folder_state.h"
 
@@ -64,6 +65,16 @@ std::vector<float> export_and_render(cli::Scene scene, const fs::path& dir) {
 }
 
 class ExampleRender : public ::testing::TestWithParam<fs::path> {};
+
+TEST_P(ExampleRender, FitsTheDefaultMemoryAndWorkLimitsWithRoomToSpare) {
+  // The limits (output/budget.h) stop runaway scenes; no example may come near them, rendered
+  // whole with the default 4 POV-Ray processes.
+  const cli::Scene scene = cli::load_scene_file(GetParam());
+  const auto e = cli::scene_to_export(scene);
+  const output::Budget b = output::estimate_budget(e, {1, scene.frames}, 4);
+  EXPECT_LT(b.total_bytes(), output::default_max_memory_bytes() / 4) << GetParam();
+  EXPECT_LT(b.drop_steps, output::BudgetLimits{}.max_drop_steps / 100) << GetParam();
+}
 
 TEST_P(ExampleRender, RendersRainThatChangesThePicture) {
   if (!have_povray()) GTEST_SKIP() << "povray is not installed: example renders skipped";

@@ -209,5 +209,32 @@ TEST_F(PovrayFolderCli, CtrlCInALongPrewarmStopsWithinASecondAndTheRunResumes) {
   expect_same_as_clean_render(dir / "out", dir / "clean");
 }
 
+TEST_F(PovrayFolderCli, AScenePastTheMemoryOrWorkLimitStopsBeforeItWritesAnything) {
+  const auto dir = testing::fresh_test_dir("cli_limits");
+  const auto scene = write_scene(dir, 3);
+  const std::vector<std::string> args{"render", scene.string(), "-o", (dir / "out").string()};
+  auto with = [&](std::vector<std::string> extra) {
+    auto all = args;
+    all.insert(all.end(), extra.begin(), extra.end());
+    return all;
+  };
+  const auto memory = run_raintrace(with({"--max-memory", "64M"}), dir / "a.log");
+  EXPECT_EQ(memory.exit_code, 2) << memory.output;
+  EXPECT_TRUE(contains(memory.output, "this scene needs about")) << memory.output;
+  EXPECT_TRUE(contains(memory.output, "lower [rain] far_m or rate_mm_per_h")) << memory.output;
+  EXPECT_TRUE(contains(memory.output, "raise the limit with --max-memory 1G")) << memory.output;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  const auto work = run_raintrace(with({"--max-drop-steps", "1000"}), dir / "b.log");
+  EXPECT_EQ(work.exit_code, 2) << work.output;
+  EXPECT_TRUE(contains(work.output, "drop-steps of simulation")) << work.output;
+  EXPECT_TRUE(contains(work.output, "--max-drop-steps")) << work.output;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  // The limit raised as the message says: the run goes through.
+  const auto raised = run_raintrace(with({"--max-memory", "1G"}), dir / "c.log");
+  EXPECT_EQ(raised.exit_code, 0) << raised.output;
+  clean_render(scene, dir / "clean");
+  expect_same_as_clean_render(dir / "out", dir / "clean");
+}
+
 }  // namespace
 }  // namespace raintrace::render
