@@ -4,6 +4,7 @@
 
 #include <fmt/core.h>
 
+#include "output/disk_space.h"
 #include "output/layout.h"
 #include "render/process.h"
 
@@ -73,6 +74,9 @@ MovieResult make_movies(const std::filesystem::path& out_dir, double fps,
     } else {
       std::filesystem::remove(temp);
       std::filesystem::remove(out_dir / name);
+      output::throw_if_out_of_space(
+          out_dir, 1 << 20,
+          fmt::format("ffmpeg could not write {} into {}", name, out_dir.string()));
       if (!result.warning.empty()) result.warning += "; ";
       result.warning += fmt::format(
           "ffmpeg failed making {} (exit code {}, see logs/{}.ffmpeg.log)", name, code, name);

@@ -29,8 +29,8 @@ struct MovieResult {
 
 /// Makes out_dir/animation.mp4 and out_dir/animation.gif from the frames, each through a temp
 /// name renamed on success; a movie that could not be made is removed (an older one would show
-/// other frames). Never throws for a missing or failing ffmpeg: that is a warning, the frames
-/// are the result that matters.
+/// other frames). A missing or failing ffmpeg is a warning, the frames are the result that
+/// matters; a full disk throws std::system_error (ENOSPC).
 MovieResult make_movies(const std::filesystem::path& out_dir, double fps,
                         const MovieFrames& frames);
 

@@ -11,6 +11,7 @@
 #include <thread>
 #include <vector>
 
+#include "output/disk_space.h"
 #include "output/image_check.h"
 #include "render/process.h"
 
@@ -117,6 +118,11 @@ class Runner {
  private:
   bool stop_requested() const { return m_settings.stop != nullptr && m_settings.stop->load(); }
 
+  // Room one more image needs at most: an uncompressed 16-bit RGBA PNG, plus its log.
+  [[nodiscard]] std::uint64_t image_bytes() const {
+    return static_cast<std::uint64_t>(m_settings.width) * m_settings.height * 8 + 65536;
+  }
+
   Running start(const RenderJob& job) {
     if (m_callbacks.on_started) m_callbacks.on_started(job);
     Running r;
@@ -160,6 +166,12 @@ class Runner {
     promote_ready(r);
     if (r.next_frame > r.job.span.last) return;
     if (stop_requested()) return;  // interrupted, not failed: the next run redoes the rest
+    // POV-Ray says "Cannot access data in file" when its image does not fit: ask the disk.
+    output::throw_if_out_of_space(
+        m_out, image_bytes(),
+        fmt::format("POV-Ray could not write {} of frame {} into {} (log {})",
+                    r.job.pass == Pass::image ? "the image" : "the mask", r.next_frame,
+                    m_out.string(), r.log));
     FrameFailure failure;
     failure.frame = r.next_frame;
     failure.pass = r.job.pass;

@@ -65,7 +65,9 @@ class JobSource {
 
 /// Renders every job; returns false when stopped by settings.stop (finished frames are promoted
 /// and reported first). A span whose process fails at frame f reports f and goes on with
-/// f+1..last in a new process. Logs go to out_dir/logs/<pass>_AAAA-BBBB.log.
+/// f+1..last in a new process — unless the folder's filesystem is full: then it throws
+/// std::system_error (ENOSPC) naming the frame, since every further frame would fail the same
+/// way. Logs go to out_dir/logs/<pass>_AAAA-BBBB.log.
 bool run_povray_jobs(const std::filesystem::path& out_dir, std::deque<RenderJob> jobs,
                      const RunnerSettings& settings, const RunnerCallbacks& callbacks);
 /// The same, with jobs taken from `source` as they become ready, until it is exhausted and

@@ -236,5 +236,82 @@ TEST_F(PovrayFolderCli, AScenePastTheMemoryOrWorkLimitStopsBeforeItWritesAnythin
   expect_same_as_clean_render(dir / "out", dir / "clean");
 }
 
+// Bytes a folder takes on a tmpfs: every file rounded up to whole 4 KiB pages, and a page per
+// folder.
+std::uintmax_t tmpfs_usage(const fs::path& dir) {
+  std::uintmax_t bytes = 4096;
+  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+    bytes += entry.is_regular_file() ? (entry.file_size() + 4095) / 4096 * 4096 : 4096;
+  }
+  return bytes;
+}
+
+int run_tool(const std::vector<std::string>& argv) {
+  ProcessSpec spec;
+  spec.argv = argv;
+  return run_capture(spec).exit_code;
+}
+
+TEST_F(PovrayFolderCli, AFullDiskStopsTheRunNamingTheCauseAndTheRunResumesWhenThereIsRoom) {
+  if (::geteuid() != 0) {
+    GTEST_SKIP() << "needs root to mount a small tmpfs (mount -t tmpfs -o size=…): skipped";
+  }
+  const auto dir = testing::fresh_test_dir("cli_disk_full");
+  const auto scene = write_scene(dir, 4);
+  clean_render(scene, dir / "clean");
+  const auto usage = tmpfs_usage(dir / "clean");
+  const auto mnt = dir / "mnt";
+  fs::create_directories(mnt);
+  struct Unmount {
+    fs::path path;
+    ~Unmount() { run_tool({"umount", path.string()}); }
+  };
+  // The disk fills at a different stage each time: export, the plate, frames, the movie.
+  for (const double share : {0.3, 0.6, 0.85}) {
+    const auto size =
+        std::to_string(static_cast<std::uintmax_t>(share * static_cast<double>(usage)) / 1024) +
+        "k";
+    if (run_tool({"mount", "-t", "tmpfs", "-o", "size=" + size, "tmpfs", mnt.string()}) != 0) {
+      GTEST_SKIP() << "mount -t tmpfs failed (not allowed here?): skipped";
+    }
+    const Unmount unmount{mnt};
+    const auto r = run_raintrace({"render", scene.string(), "-o", (mnt / "out").string()},
+                                 dir / ("full_" + size + ".log"));
+    EXPECT_EQ(r.exit_code, 3) << "tmpfs of " << size << ":\n" << r.output;  // system error
+    EXPECT_TRUE(contains(r.output, "No space left on device")) << r.output;
+    // Room again: the same command finishes what the full disk stopped.
+    ASSERT_EQ(run_tool({"mount", "-o", "remount,size=" + std::to_string(usage * 4 / 1024) + "k",
+                        mnt.string()}),
+              0);
+    const auto resumed = run_raintrace({"render", scene.string(), "-o", (mnt / "out").string()},
+                                       dir / ("resumed_" + size + ".log"));
+    EXPECT_EQ(resumed.exit_code, 0) << resumed.output;
+    expect_same_as_clean_render(mnt / "out", dir / "clean");
+  }
+}
+
+TEST(FolderCli, AHugeUnknownKeyIsCutInTheErrorLine) {
+  const auto dir = testing::fresh_test_dir("cli_huge_key");
+  std::ofstream{dir / "huge.toml"} << "[rain]\n" << std::string(15'000'000, 'x') << " = 1\n";
+  const auto r = run_raintrace(
+      {"export", (dir / "huge.toml").string(), "-o", (dir / "out").string()}, dir / "log");
+  EXPECT_EQ(r.exit_code, 2) << r.output.substr(0, 300);
+  EXPECT_LT(r.output.size(), 400U) << r.output.substr(0, 300);
+  EXPECT_TRUE(contains(r.output, "rain.xxxx")) << r.output.substr(0, 300);
+  EXPECT_TRUE(contains(r.output, ": unknown key")) << r.output.substr(0, 300);
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+TEST(FolderCli, AnOutputFolderThatCannotBeCreatedIsNamedWithTheReason) {
+  const auto dir = testing::fresh_test_dir("cli_unwritable");
+  std::ofstream{dir / "a_file"} << "not a folder";
+  const auto scene = write_scene(dir, 1);
+  const auto r =
+      run_raintrace({"export", scene.string(), "-o", (dir / "a_file/out/x").string()}, dir / "log");
+  EXPECT_EQ(r.exit_code, 3) << r.output;  // cli/exit_codes.h: system error
+  EXPECT_EQ(r.output, "raintrace: error: cannot create output folder " +
+                          (dir / "a_file/out/x").string() + ": Not a directory\n");
+}
+
 }  // namespace
 }  // namespace raintrace::render
