@@ -294,16 +294,18 @@ int run_render(const RenderArgs& args) {
                in.range.last, out.string(),
                args.backend == "local" ? " (POV-Ray starts as they are written)" : "");
   }
+  render::BackendSettings common;
+  common.force = args.force;
+  common.only = in.only;
+  common.stop = &stop_requested();
+  common.on_progress = on_progress;
+  common.on_failed = on_failed;
+  common.on_plan = on_plan;
   if (args.backend == "local") {
     render::LocalRenderSettings settings;
+    static_cast<render::BackendSettings&>(settings) = common;
     settings.jobs = jobs;
-    settings.force = args.force;
-    settings.only = in.only;
-    settings.stop = &stop_requested();
-    settings.on_progress = on_progress;
-    settings.on_failed = on_failed;
     settings.on_notice = on_notice;
-    settings.on_plan = on_plan;
     if (in.scene) {
       render::FrameFeed feed{in.range.count()};
       ExportThread exporter{folder, *in.scene, in.range, feed, stop_requested()};
@@ -323,16 +325,11 @@ int run_render(const RenderArgs& args) {
     }
     if (!summary.interrupted) {
       render::SlurmRenderSettings settings;
+      static_cast<render::BackendSettings&>(settings) = common;
       settings.tasks = args.tasks;
       settings.partition = args.partition;
       settings.raintrace_exe = std::filesystem::read_symlink("/proc/self/exe");
-      settings.force = args.force;
-      settings.only = in.only;
-      settings.stop = &stop_requested();
-      settings.on_progress = on_progress;
-      settings.on_failed = on_failed;
       settings.on_status = on_notice;
-      settings.on_plan = on_plan;
       summary = render::render_slurm(folder, settings);
     }
   }

@@ -70,17 +70,19 @@ void remove_file(const fs::path& dir, const std::string& relative) {
   fs::remove(dir / path, ignored);
 }
 
+// Removes the files the manifest records for a frame: its .pov files, its image and mask.
+void remove_frame_files(const fs::path& dir, const FrameEntry& f) {
+  for (const PictureRecord* p : {&f.image, f.mask ? &*f.mask : nullptr}) {
+    if (p == nullptr) continue;
+    remove_file(dir, p->scene);
+    remove_file(dir, p->path);
+  }
+}
+
 // Removes every file the manifest records: frame files, pictures, movie and contact sheet.
 // Returns how many frames it listed.
 int remove_recorded_files(const fs::path& dir, const Manifest& m) {
-  for (const FrameEntry& f : m.frames) {
-    remove_file(dir, f.image.scene);
-    remove_file(dir, f.image.path);
-    if (f.mask) {
-      remove_file(dir, f.mask->scene);
-      remove_file(dir, f.mask->path);
-    }
-  }
+  for (const FrameEntry& f : m.frames) remove_frame_files(dir, f);
   for (const char* name : {kMovie, kGif, kContactSheet}) remove_file(dir, name);
   return static_cast<int>(m.frames.size());
 }
@@ -287,19 +289,8 @@ void FolderState::begin_export(const std::string& shared_hash, FrameSpan range, 
   // A shorter scene: the frames it no longer has go, with the files recorded for them.
   const auto beyond = std::find_if(frames.begin(), frames.end(),
                                    [&](const FrameEntry& f) { return f.number > frame_count; });
-  if (beyond != frames.end()) {
-    Manifest gone;
-    gone.frames.assign(beyond, frames.end());
-    for (const FrameEntry& f : gone.frames) {
-      remove_file(m_dir, f.image.scene);
-      remove_file(m_dir, f.image.path);
-      if (f.mask) {
-        remove_file(m_dir, f.mask->scene);
-        remove_file(m_dir, f.mask->path);
-      }
-    }
-    frames.erase(beyond, frames.end());
-  }
+  for (auto it = beyond; it != frames.end(); ++it) remove_frame_files(m_dir, *it);
+  frames.erase(beyond, frames.end());
   const bool shared_changed =
       !m_manifest.shared_hash.empty() && m_manifest.shared_hash != shared_hash;
   m_manifest.raintrace_version = RAINTRACE_VERSION;

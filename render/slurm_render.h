@@ -15,22 +15,16 @@
 #include <string>
 #include <vector>
 
-#include "render/local_render.h"
+#include "render/backend.h"
 
 namespace raintrace::render {
 
-struct SlurmRenderSettings {
+struct SlurmRenderSettings : BackendSettings {
   int tasks = 0;                        ///< array size; 0 = one task per ~8 frames, at most 64
   std::string partition;                ///< sbatch --partition; empty = the cluster's default
   std::filesystem::path raintrace_exe;  ///< absolute path the nodes run for each task
-  bool force = false;
-  std::optional<FrameSpan> only;
-  double poll_seconds = 1.0;                ///< how often squeue and the results folder are checked
-  const std::atomic<bool>* stop = nullptr;  ///< set → scancel the job, keep finished frames
-  std::function<void(const RenderProgress&)> on_progress;
-  std::function<void(const FrameFailure&)> on_failed;
-  std::function<void(const std::string&)> on_status;       ///< "submitted job 12 (4 tasks)", …
-  std::function<void(const output::RenderPlan&)> on_plan;  ///< what is submitted, and why
+  double poll_seconds = 1.0;            ///< how often squeue and the results folder are checked
+  std::function<void(const std::string&)> on_status;  ///< "submitted job 12 (4 tasks)", …
 };
 
 /// One task's share: spans of images and of masks.

@@ -11,6 +11,7 @@
 #include "output/folder_state.h"
 #include "output/image_check.h"
 #include "render/environment_plate.h"
+#include "render/local_render.h"
 #include "render/process.h"
 #include "render/test_folder.h"
 

@@ -49,12 +49,7 @@ bool wait_for_log(ChildProcess& child, const fs::path& log, const std::string& t
   return true;
 }
 
-class PovrayFolderCli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    if (!find_program("povray")) GTEST_SKIP() << "POV-Ray not installed (apt-get install povray)";
-  }
-};
+class PovrayFolderCli : public testing::PovrayTest {};
 
 TEST_F(PovrayFolderCli, ASecondRunOnTheSameFolderStopsAtOnceNamingTheFirst) {
   const auto dir = testing::fresh_test_dir("cli_two_runs");

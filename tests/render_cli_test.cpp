@@ -41,12 +41,7 @@ int rendered_in_manifest(const std::filesystem::path& dir) {
   }
 }
 
-class PovrayRenderCli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    if (!find_program("povray")) GTEST_SKIP() << "POV-Ray not installed (apt-get install povray)";
-  }
-};
+class PovrayRenderCli : public testing::PovrayTest {};
 
 TEST_F(PovrayRenderCli, RendersAFolderPrintsPlainProgressLinesAndTheOutputs) {
   const auto dir = testing::fresh_test_dir("cli_ok");
