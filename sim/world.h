@@ -28,10 +28,6 @@
 
 namespace raintrace::sim {
 
-/// Throws std::invalid_argument naming the first field out of range, e.g.
-/// "rain.far_m must be > rain.near_m (got 0.2 <= 0.3)".
-void validate(const SimParams& params);
-
 /// Thrown by World's stepping loops (constructor, advance_to) once its cancel flag is set.
 class Cancelled : public std::exception {
  public:
