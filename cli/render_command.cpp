@@ -65,7 +65,7 @@ Examples:
   raintrace render examples/default.toml -o out/default --jobs 3   # POV-Ray processes in flight
   raintrace render examples/default.toml -o out/small --width 320 --height 240
   raintrace render examples/default.toml -o out/final --quality final   # antialiased
-  raintrace render examples/default.toml -o out/default --mask     # also images/mask_NNNN.png
+  raintrace render examples/default.toml -o out/masks --mask       # also images/mask_NNNN.png
   raintrace render examples/default.toml -o out/default --force    # re-render every frame
   raintrace render out/default                                     # an already exported folder
   raintrace render examples/default.toml -o /shared/out --backend slurm --partition short --tasks 16
@@ -75,7 +75,8 @@ frames are still simulated (Slurm exports everything first, then submits).
 Re-running the same command renders only frames that are missing or whose inputs changed;
 Ctrl-C stops the export and POV-Ray, keeps finished frames, and the next run resumes.
 Output: OUT/images/frame_NNNN.png, OUT/animation.mp4 and .gif (needs ffmpeg),
-OUT/contact_sheet.png, OUT/manifest.json (per-frame status and seconds), OUT/logs/.
+OUT/contact_sheet.png, OUT/manifest.json (per-frame status, image size and content hash,
+seconds: docs/output-folder.md), OUT/raintrace.lock, OUT/logs/.
 Slurm: OUT and the raintrace binary must be on a filesystem every node mounts at the same path;
 the nodes need POV-Ray. Each array task runs `raintrace render --slurm-task OUT`.
 OUT must be new, empty, or a folder raintrace made from the same scene and settings (seed,

@@ -68,7 +68,7 @@ TEST(World, ACancelFlagStopsThePrewarmAndAdvanceBetweenSubsteps) {
   const double t = world.time_s();
   cancel = true;
   EXPECT_THROW(world.advance_to(1e9), Cancelled);  // fps = 1e-9: frame 2 lies at 1e9 s
-  EXPECT_LT(world.time_s(), t + 1e-3);              // stopped at the first substep check
+  EXPECT_LT(world.time_s(), t + 1e-3);             // stopped at the first substep check
 }
 
 TEST(World, EstimateMatchesWhatTheWorldHolds) {
