@@ -40,7 +40,7 @@ double spread(const std::vector<float>& px) {
 /// A folder with the shared files and frames 1..frames of synthetic rain (flash in frame 1).
 fs::path make_folder(const std::string& name, ExportParams look, int frames = 1,
                      std::size_t drops = 3000) {
-  const fs::path dir = fs::temp_directory_path() / ("raintrace_povray_test_" + name);
+  const fs::path dir = testing::scratch_folder("povray_test_" + name);
   fs::remove_all(dir);
   write_shared_files(dir, look, frames, dir);
   for (int n = 1; n <= frames; ++n) {

@@ -5,6 +5,7 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -14,6 +15,13 @@
 #include "povgen/output_folder.h"
 
 namespace raintrace::povgen::testing {
+
+/// A folder of the temporary directory for one test, unique to this process: engineers and CI
+/// jobs sharing a machine (and /tmp) run the same tests at the same time.
+inline std::filesystem::path scratch_folder(const std::string& name) {
+  return std::filesystem::temp_directory_path() /
+         ("raintrace_" + name + "_" + std::to_string(::getpid()));
+}
 
 inline bool have_povray() { return std::system("command -v povray >/dev/null 2>&1") == 0; }
 

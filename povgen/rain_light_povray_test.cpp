@@ -89,7 +89,7 @@ struct Renders {
 
 Renders render(const std::string& name, ExportParams look, const Environment& environment,
                const std::vector<Drop>& drops) {
-  const fs::path dir = fs::temp_directory_path() / ("raintrace_rain_light_test_" + name);
+  const fs::path dir = testing::scratch_folder("rain_light_test_" + name);
   fs::remove_all(dir);
   fs::create_directories(dir);
   write_file_atomic(dir / "environment_source.inc", environment_text(environment));
