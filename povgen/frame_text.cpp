@@ -358,7 +358,6 @@ void write_frame_text(const FrameValues& values, const TextSink& sink,
   out.text("#include \"scene.inc\"\n");
   write_sphere_union(out, values.drops, "RT_DropMaterial");
   write_streak_mesh(out, values.streaks, atlas);
-  write_sphere_union(out, values.splashes, "RT_SplashMaterial");
   write_bolts(out, values.bolts);
   out.flush();
 }
@@ -366,8 +365,7 @@ void write_frame_text(const FrameValues& values, const TextSink& sink,
 std::string frame_text(const FrameValues& values, const StreakAtlasLayout& atlas, int threads) {
   std::string text;
   // Typical sizes: ~190 bytes per streak, ~45 per sphere; one reservation, no regrowth.
-  text.reserve(1024 + 200 * values.streaks.size() +
-               64 * (values.drops.size() + values.splashes.size()));
+  text.reserve(1024 + 200 * values.streaks.size() + 64 * values.drops.size());
   write_frame_text(
       values, [&text](std::string_view piece) { text += piece; }, atlas, threads);
   return text;

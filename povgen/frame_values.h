@@ -39,17 +39,17 @@ struct BoltValue {
 
 struct FrameValues {
   int index = 0;
-  std::vector<SphereValue> drops;     ///< near drops: nearer than sphere_distance_m
-  std::vector<StreakValue> streaks;   ///< far drops
-  std::vector<SphereValue> splashes;  ///< splash droplets
+  std::vector<SphereValue> drops;    ///< near drops (then near splash droplets)
+  std::vector<StreakValue> streaks;  ///< far drops (then far splash droplets)
   std::vector<BoltValue> bolts;
   float flash = 0.0f;              ///< 0..1
   glm::vec3 flash_position{0.0f};  ///< where the lightning light sits
 };
 
 /// Builds the values of one frame. Drops nearer than look.sphere_distance_m that are at least
-/// one pixel across become spheres, all others streaks. Drops and droplets wholly outside the
-/// view are dropped;
+/// one pixel across become spheres, all others streaks; splash droplets follow, the same way
+/// (look.splash_keep of them, by id, carrying the others' light). Drops and droplets wholly
+/// outside the view are dropped;
 /// a streak narrower (or shorter) than one pixel is widened to a pixel and made fainter by the
 /// same factor, so distant rain keeps its light without antialiasing. Streaks fainter than
 /// look.min_streak_coverage are thinned out by drop id and the survivors drawn at that

@@ -70,8 +70,10 @@ fs::path make_folder(const std::string& name, ExportParams look, int frames = 1,
     sim::Frame frame = synthetic_rain(drops, look.camera, double(look.width) / look.height, 12.0,
                                       1.0, static_cast<std::uint64_t>(n));
     frame.index = n;
+    frame.splashes.id = {7};
     frame.splashes.position = {{0.2f, 0.01f, 1.0f}};
     frame.splashes.velocity = {{0.0f, 1.0f, 0.0f}};
+    frame.splashes.acceleration = {{0.0f, -9.81f, 0.0f}};
     frame.splashes.diameter = {0.5e-3f};
     frame.splashes.opacity = {1.0f};
     if (n == 1) {

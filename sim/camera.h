@@ -15,6 +15,9 @@ struct Camera {
   double fov_deg = 60.0;
   /// Width / height of the image, > 0. Set from [output] width and height. Default 16/9.
   double aspect = 16.0 / 9.0;
+  /// Image width in pixels, >= 1. Set from [output] width: the ground's level of detail (how
+  /// many impacts are worth simulating at a distance) follows the size of a pixel. Default 640.
+  int width_px = 640;
   /// Exposure (the paper's persistence time t in eq. 3), seconds, in [0, 1]. Default 0.02.
   double exposure_s = 0.02;
 };

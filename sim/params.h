@@ -57,12 +57,39 @@ struct WindParams {
 };
 
 struct SplashParams {
-  /// Drops hitting the ground end in splashes. Default true.
+  /// Drops that hit the ground hard enough throw crown-splash droplets (sim/splash.h: above
+  /// K = We·Oh^−0.4 > 2100 + 5880·(h/D)^1.44). Default true.
   bool enabled = true;
-  /// Droplets per splash, in [0, 32]. Default 4.
-  int droplets = 4;
-  /// How long splash droplets live, seconds, in (0, 2]. Default 0.15.
-  double lifetime_s = 0.15;
+  /// Most droplets one splash throws, in [0, 64]; the crown's own count is 5·(K/K_c − 1), so
+  /// this only trims the biggest splashes. 0 draws none (impacts still ripple). Default 32.
+  int droplets = 32;
+  /// Longest a droplet flies before it is dropped, seconds, in (0, 2]; it fades over the last
+  /// third. Most land sooner (a 1 mm droplet thrown at 1.5 m/s: 0.1 s). Default 0.3.
+  double lifetime_s = 0.3;
+};
+
+struct PuddleParams {
+  /// Share of the wet ground under standing water, in [0, 0.9]. < 0: the environment's default
+  /// (cli resolves it: 0.25 for night_street, 0 elsewhere; sim reads < 0 as 0). Default −1.
+  double coverage = -1.0;
+  /// Typical size of a puddle, metres, in [0.1, 20]. Default 1.2.
+  double size_m = 1.2;
+  /// Depth of water in the middle of a puddle, mm, in [max(1, film_mm), 100]. Default 6.
+  double depth_mm = 6.0;
+  /// Depth of the water film on the wet ground between puddles, mm, in [0, 5]. It sets the
+  /// splash threshold there (h/D in K_c). Default 0.3.
+  double film_mm = 0.3;
+  /// Seed of the puddle layout. The puddles belong to the street, not to the rain: `--seed`
+  /// changes the rain and leaves them where they are. Default 1.
+  std::uint64_t seed = 1;
+};
+
+struct RippleParams {
+  /// Impacts on standing water start ring ripples (sim/ripples.h). Default true.
+  bool enabled = true;
+  /// How long a ring on a puddle lasts before it has faded away, seconds, in [0.05, 5].
+  /// Default 0.5.
+  double lifetime_s = 0.5;
 };
 
 struct LightningParams {
@@ -93,6 +120,8 @@ struct SimParams {
   RainParams rain;
   WindParams wind;
   SplashParams splashes;
+  PuddleParams puddles;
+  RippleParams ripples;
   LightningParams lightning;
   /// Height of the ground plane, metres. Default 0.
   double ground_y_m = 0.0;
@@ -100,8 +129,8 @@ struct SimParams {
   /// results do not depend on the frame rate. Default 0.002.
   double substep_s = 0.002;
   /// Simulated time before frame 1 so the volume is already full of falling rain, seconds,
-  /// in [0, 60]. Default −1: World picks max(0.2, splashes.lifetime_s + 0.05) — the volume
-  /// is filled at steady-state density first, so only splashes and merging need the time.
+  /// in [0, 60]. Default −1: World picks 0.2 — the volume is filled at steady-state density
+  /// first, so only merging needs the time (the ground's impacts from before are sampled).
   double prewarm_s = -1.0;
   /// Worker threads for a step; 0 = all cores. Results never depend on it.
   int threads = 0;

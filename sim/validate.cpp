@@ -1,4 +1,5 @@
 // Range checks of every SimParams field (ranges as documented in params.h and camera.h).
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -52,6 +53,7 @@ void validate(const SimParams& p) {
   }
   open_range(p.camera.fov_deg, 1.0, 170.0, "camera.fov_deg");
   positive(p.camera.aspect, "camera.aspect");
+  in_range(p.camera.width_px, 1, 100000, "camera.width_px");
   in_range(p.camera.exposure_s, 0.0, 1.0, "camera.exposure_s");
 
   const RainParams& r = p.rain;
@@ -80,11 +82,17 @@ void validate(const SimParams& p) {
   in_range(w.turbulence_m_per_s, 0.0, 30.0, "wind.turbulence_m_per_s");
   in_range(w.turbulence_scale_m, 0.1, 100.0, "wind.turbulence_scale_m");
 
-  in_range(p.splashes.droplets, 0, 32, "splashes.droplets");
+  in_range(p.splashes.droplets, 0, 64, "splashes.droplets");
   if (!(p.splashes.lifetime_s > 0.0 && p.splashes.lifetime_s <= 2.0)) {
     throw std::invalid_argument("splashes.lifetime_s must be in (0, 2] (got " +
                                 str(p.splashes.lifetime_s) + ")");
   }
+
+  if (!(p.puddles.coverage < 0.0)) in_range(p.puddles.coverage, 0.0, 0.9, "puddles.coverage");
+  in_range(p.puddles.size_m, 0.1, 20.0, "puddles.size_m");
+  in_range(p.puddles.film_mm, 0.0, 5.0, "puddles.film_mm");
+  in_range(p.puddles.depth_mm, std::max(1.0, p.puddles.film_mm), 100.0, "puddles.depth_mm");
+  in_range(p.ripples.lifetime_s, 0.05, 5.0, "ripples.lifetime_s");
 
   const LightningParams& l = p.lightning;
   in_range(l.strikes_per_minute, 0.0, 600.0, "lightning.strikes_per_minute");
