@@ -3,10 +3,12 @@
 // re-checked by povgen before they touch POV-Ray text (defence in depth).
 #pragma once
 
+#include <cstdint>
 #include <glm/vec3.hpp>
 #include <string>
 
 #include "sim/camera.h"
+#include "sim/params.h"
 
 namespace raintrace::povgen {
 
@@ -44,6 +46,19 @@ enum class Quality {
   preview,
   final,  ///< adaptive antialiasing (method 1, no jitter), RT_Preview=0: the full scene
 
+};
+
+/// The wet ground: povgen draws the simulation's puddles (the same field, sim/puddles.h) and the
+/// ripples of each frame's impacts through templates/raintrace_ground.inc.
+struct GroundLook {
+  /// The scene's puddles, coverage resolved (<= 0: none, and the ground is drawn as before).
+  sim::PuddleParams puddles;
+  /// The scene's ripples and rain rate (mm/h): the roughness the rings give a puddle where a
+  /// pixel is too coarse to draw them (sim::ripple_slope_rms()).
+  sim::RippleParams ripples;
+  double rain_rate_mm_per_h = 0.0;
+  /// Height of the ground plane, m (the simulation's ground_y_m).
+  double ground_y_m = 0.0;
 };
 
 struct ExportParams {
@@ -86,6 +101,7 @@ struct ExportParams {
   bool mask = false;
   FogParams fog;
   EnvironmentParams environment;
+  GroundLook ground;
   /// Intensity of the lightning light at full flash, relative to the environment's key light,
   /// in [0, 100]. Default 8.
   double lightning_light = 8.0;

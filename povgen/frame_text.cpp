@@ -12,6 +12,8 @@
 #include <string_view>
 #include <vector>
 
+#include "povgen/ground_scene.h"
+#include "povgen/manifest.h"
 #include "povgen/number_format.h"
 #include "povgen/ordered_chunks.h"
 
@@ -355,6 +357,19 @@ void write_frame_text(const FrameValues& values, const TextSink& sink,
   const bool bolts = std::any_of(values.bolts.begin(), values.bolts.end(),
                                  [](const BoltValue& b) { return !b.segments.empty(); });
   if (bolts) out.text("#declare RT_Bolts=1;\n");
+  if (values.ground) {
+    out.text("#declare RT_RippleTime=");
+    out.number(values.time_s);
+    out.text(";\n");
+  }
+  if (!values.ripples.empty()) {
+    // The map's pixels' hash: the frame's text, and so its input hash, changes with them.
+    const std::vector<std::uint16_t> pixels = ripple_pixels(values.ripples);
+    out.text("#declare RT_RippleMap=\"" + ripple_map_name(values.index) + "\"; // " +
+             content_hash(std::string_view(reinterpret_cast<const char*>(pixels.data()),
+                                           pixels.size() * sizeof(pixels[0]))) +
+             "\n");
+  }
   out.text("#include \"scene.inc\"\n");
   write_sphere_union(out, values.drops, "RT_DropMaterial");
   write_streak_mesh(out, values.streaks, atlas);

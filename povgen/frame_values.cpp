@@ -7,7 +7,9 @@
 #include <glm/geometric.hpp>
 
 #include "povgen/drop_shape.h"
+#include "povgen/ground_scene.h"
 #include "povgen/ordered_chunks.h"
+#include "povgen/scene_files.h"
 #include "povgen/view_frustum.h"
 
 namespace raintrace::povgen {
@@ -234,6 +236,22 @@ void build_frame_values(const sim::Frame& frame, const ExportParams& look, Frame
   add_drops_in_chunks(drops, values, threads);
 
   add_splash_droplets(DropContext{ctx, frame.splashes, drops.split}, look.splash_keep, values);
+
+  values.ripples = RippleMap{};
+  values.ground = ground_applies(look);
+  values.time_s = frame.time_s;
+  // A frame that draws the plate shows the plate's puddles, whatever its rings: no map then.
+  const bool traced = !environment_plate_applies(look) || frame.flash > 0.0f ||
+                      std::any_of(values.bolts.begin(), values.bolts.end(),
+                                  [](const BoltValue& b) { return !b.segments.empty(); });
+  if (values.ground && traced && !frame.ripples.empty()) {
+    if (!values.ground_pixels.matches(look.camera, look.width, look.height,
+                                      look.ground.ground_y_m)) {
+      values.ground_pixels =
+          GroundPixels(look.camera, look.width, look.height, look.ground.ground_y_m);
+    }
+    draw_ripples(values.ground_pixels, frame.ripples, values.ripples);
+  }
 
   values.flash = std::clamp(frame.flash, 0.0f, 1.0f);
   values.flash_position = default_flash_position(view);

@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "povgen/frame_text.h"
+#include "povgen/ground_scene.h"
 #include "povgen/manifest.h"
 #include "povgen/scene_files.h"
 #include "povgen/streak_atlas.h"
@@ -46,6 +47,18 @@ void create_output_folders(const std::filesystem::path& out_dir) {
 
 std::string write_frame_file(const std::filesystem::path& path, const FrameValues& values,
                              std::string_view hash_prefix, int threads) {
+  if (!values.ripples.empty()) {
+    // Beside frames/: the frame's text names it and carries its hash (frame_text.h).
+    const std::filesystem::path map =
+        path.parent_path().parent_path() / ripple_map_name(values.index);
+    std::error_code made;
+    std::filesystem::create_directories(map.parent_path(), made);
+    std::filesystem::path map_tmp = map;
+    map_tmp.replace_extension(".tmp.png");
+    write_ripple_png(map_tmp, values.ripples);
+    std::filesystem::rename(map_tmp, map, made);
+    if (made) throw std::runtime_error("cannot rename " + map_tmp.string() + ": " + made.message());
+  }
   std::filesystem::path tmp = path;
   tmp += ".tmp";
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(tmp.c_str(), "wb"), &std::fclose);
@@ -96,6 +109,7 @@ std::string write_shared_files(const std::filesystem::path& out_dir, const Expor
   emit("scene.ini", ini_text(look, frame_count, "frame", "scene.pov"));
   emit(kEnvironmentInclude, environment_text(look.environment, scene_dir));
   emit(kMaterialsInclude, materials_template());
+  if (ground_applies(look)) emit(kGroundInclude, ground_template());
   if (environment_plate_applies(look)) {
     emit(kPlatePov, plate_pov_text());
     emit(kPlateIni, plate_ini_text(look));
@@ -119,6 +133,19 @@ std::string write_shared_files(const std::filesystem::path& out_dir, const Expor
   all += kStreakAtlas;
   all += '\0';
   all += read_file_bytes(atlas);
+  if (ground_applies(look)) {
+    const std::filesystem::path mask = out_dir / kPuddleMask;
+    std::filesystem::path mask_tmp = mask;
+    mask_tmp.replace_filename("puddle_mask.tmp.png");
+    write_mask_png(mask_tmp, look.width, look.height, ground_puddle_mask(look));
+    std::filesystem::rename(mask_tmp, mask, error);
+    if (error) {
+      throw std::runtime_error("cannot rename " + mask_tmp.string() + ": " + error.message());
+    }
+    all += kPuddleMask;
+    all += '\0';
+    all += read_file_bytes(mask);
+  }
   return content_hash(all);
 }
 

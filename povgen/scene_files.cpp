@@ -7,6 +7,7 @@
 #include <string>
 
 #include "povgen/frame_text.h"
+#include "povgen/ground_scene.h"
 #include "povgen/number_format.h"
 #include "povgen/templates.h"
 
@@ -171,6 +172,7 @@ std::string scene_inc_text(const ExportParams& look) {
   text += "#include \"" + std::string{kMaterialsInclude} + "\"\n";
   text += "#if(RT_Mask)\nbackground{rgb 0}\n#else\n";
   text += "#declare RT_KeyLight=1;\n";
+  text += ground_scene_text(look);
   if (environment_plate_applies(look)) {
     text += environment_with_plate_text(look, aspect);
   } else {

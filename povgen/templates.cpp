@@ -14,6 +14,7 @@ extern const char* const kNightStreetTemplate;
 extern const char* const kFieldTemplate;
 extern const char* const kCloseupTemplate;
 extern const char* const kMaterialsTemplate;
+extern const char* const kGroundTemplate;
 
 const std::vector<std::string>& builtin_environments() {
   static const std::vector<std::string> names{"night_street", "field", "closeup"};
@@ -33,6 +34,11 @@ const std::string& environment_template(std::string_view name) {
 
 const std::string& materials_template() {
   static const std::string text{kMaterialsTemplate};
+  return text;
+}
+
+const std::string& ground_template() {
+  static const std::string text{kGroundTemplate};
   return text;
 }
 
