@@ -25,10 +25,6 @@
 
 namespace raintrace::sim {
 
-/// Throws std::invalid_argument naming the first field out of range, e.g.
-/// "rain.far_m must be > rain.near_m (got 0.2 <= 0.3)".
-void validate(const SimParams& params);
-
 class World {
  public:
   /// Most drops a World will hold; more throws std::invalid_argument (reduce rain.far_m or

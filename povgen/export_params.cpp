@@ -1,0 +1,27 @@
+// Checks of ExportParams against its tables (export_params.h) before any value reaches POV-Ray
+// text: the scene reader already checked the same rows, this is the second line of defence.
+#include "povgen/export_params.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "povgen/templates.h"
+
+namespace raintrace::povgen {
+
+void validate(const ExportParams& look) {
+  sim::validate(look.camera);
+  sim::check_params<ExportParams>(kExportParams, look);
+  sim::check_params<FogParams>(kFogParams, look.fog);
+  // The ground's numbers reach scene.inc and the masks: the simulation's own ranges.
+  sim::check_params<sim::PuddleParams>(sim::kPuddleParams, look.ground.puddles);
+  sim::check_params<sim::RippleParams>(sim::kRippleParams, look.ground.ripples);
+  if (!(look.ground.rain_rate_mm_per_h >= 0.0 && look.ground.rain_rate_mm_per_h <= 500.0) ||
+      !std::isfinite(look.ground.ground_y_m)) {
+    throw std::invalid_argument("ground: rain rate must be in [0, 500] mm/h, ground_y_m finite");
+  }
+  // The name goes into no text, but an unknown one would silently pick no environment.
+  if (look.environment.include_path.empty()) environment_template(look.environment.name);
+}
+
+}  // namespace raintrace::povgen
