@@ -206,7 +206,7 @@ void World::handle_events(double t_end_s) {
         impact.velocity = v;
         impact.diameter_m = d.diameter[i];
         impact.weight = static_cast<float>(1.0 / keep);
-        record_impact(impact);
+        count(record_impact(impact));
       }
       m_removals.push_back(i);
     }
@@ -220,7 +220,7 @@ void World::handle_events(double t_end_s) {
 
 double World::impact_memory_s() const { return impact_memory(m_params); }
 
-void World::record_impact(const GroundImpact& in) {
+World::Tally World::record_impact(const GroundImpact& in) {
   GroundImpact& impact = m_impacts.emplace_back(in);
   const PuddleField::Water water = m_puddles.water_at(in.position.x, in.position.z);
   impact.water_depth_m = static_cast<float>(water.depth_m);
@@ -228,11 +228,27 @@ void World::record_impact(const GroundImpact& in) {
   if (m_params.splashes.enabled) {
     impact.crown = crown_splash(m_params.splashes, impact_input(impact), m_params.seed);
   }
-  if (impact.time_s < 0.0) return;  // prewarm: not counted
+  return {impact.time_s, impact.weight, impact.crown.expected_droplets > 0.0,
+          m_params.ripples.enabled && impact.on_puddle};
+}
+
+void World::count(const Tally& tally) {
+  if (tally.time_s < 0.0) return;  // prewarm: not counted
   ++m_ground_impacts_simulated;
-  m_ground_impacts += impact.weight;
-  if (impact.crown.expected_droplets > 0.0) m_splash_events += impact.weight;
-  if (m_params.ripples.enabled && impact.on_puddle) m_ripple_events += impact.weight;
+  m_ground_impacts += tally.weight;
+  if (tally.splash) m_splash_events += tally.weight;
+  if (tally.ripple) m_ripple_events += tally.weight;
+}
+
+void World::count_until(double t_end_s) {
+  while (m_uncounted_next < m_uncounted.size() && m_uncounted[m_uncounted_next].time_s < t_end_s) {
+    count(m_uncounted[m_uncounted_next++]);
+  }
+  if (m_uncounted_next > 4096 && 2 * m_uncounted_next > m_uncounted.size()) {
+    m_uncounted.erase(m_uncounted.begin(),
+                      m_uncounted.begin() + static_cast<std::ptrdiff_t>(m_uncounted_next));
+    m_uncounted_next = 0;
+  }
 }
 
 void World::sample_ground(double t_end_s) {
@@ -248,7 +264,12 @@ void World::sample_ground(double t_end_s) {
     sampled.clear();
     m_sampler.sample(m_next_slot, m_wind.uniform_at(slot_start(m_next_slot)), sampled,
                      m_volume_start_s);
-    for (const GroundImpact& impact : sampled) record_impact(impact);
+    // A slot is sampled at its start but its impacts happen during it: they are counted as
+    // their times pass (count_until), in time order (slots follow each other).
+    const std::size_t first = m_uncounted.size();
+    for (const GroundImpact& impact : sampled) m_uncounted.push_back(record_impact(impact));
+    std::stable_sort(m_uncounted.begin() + static_cast<std::ptrdiff_t>(first), m_uncounted.end(),
+                     [](const Tally& a, const Tally& b) { return a.time_s < b.time_s; });
     ++m_next_slot;
   }
 }
@@ -301,6 +322,7 @@ void World::step() {
   }
   handle_events(t + dt);
   sample_ground(t + dt);
+  count_until(t + dt);
   spawn(t);
   ++m_step;
   if (m_params.rain.merging && m_step % m_merge_every == 0) {

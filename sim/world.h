@@ -68,7 +68,16 @@ class World {
   void handle_events(double t_end_s);
   void sample_ground(double t_end_s);
   void add_ground_effects(Frame& frame) const;
-  void record_impact(const GroundImpact& impact);
+  /// What the running totals count of one impact.
+  struct Tally {
+    double time_s = 0.0;
+    float weight = 1.0f;
+    bool splash = false;
+    bool ripple = false;
+  };
+  Tally record_impact(const GroundImpact& impact);
+  void count(const Tally& tally);
+  void count_until(double t_end_s);
   /// How long an impact still shows (splash droplets or ripples), s.
   [[nodiscard]] double impact_memory_s() const;
   [[nodiscard]] int thread_count() const;
@@ -85,7 +94,9 @@ class World {
   std::vector<LightningSchedule::Strike> m_strikes;
   DropState m_state;
   std::vector<GroundImpact> m_impacts;
-  std::int64_t m_next_slot = 0;  // first ground-impact slot not sampled yet
+  std::int64_t m_next_slot = 0;    // first ground-impact slot not sampled yet
+  std::vector<Tally> m_uncounted;  // sampled impacts still ahead of the clock, by time
+  std::size_t m_uncounted_next = 0;
   // Splash droplets in flight at the last snapshot, kept in whole flight steps (splash.h), so
   // that each snapshot continues their flights instead of repeating them: the same droplets
   // whatever the snapshots taken. A cache of snapshot(), hence mutable.
