@@ -108,6 +108,50 @@ std::vector<float> puddle_mask(const GroundPixels& pixels, const sim::PuddleFiel
   return mask;
 }
 
+namespace {
+
+/// The film stirred by one impact (sim::film_stir over sim::stirred_radius): every pixel whose
+/// ground lies in the patch, or, for a patch smaller than its pixel, that pixel by the share of
+/// it the patch covers. False if the patch is out of view.
+bool stir_film(const GroundPixels& pixels, const sim::Ripple& ripple, RippleMap& map) {
+  const double stir = sim::film_stir(ripple);
+  const double radius = sim::stirred_radius(ripple);
+  double column = 0.0, row = 0.0;
+  if (stir <= 0.0 || !pixels.project(ripple.x, ripple.z, column, row)) return false;
+  const int w = pixels.width(), h = pixels.height();
+  if (column < 0.0 || row < 0.0 || column >= w || row >= h) return false;
+  const std::size_t centre = static_cast<std::size_t>(row) * static_cast<std::size_t>(w) +
+                             static_cast<std::size_t>(column);
+  if (!pixels.hits(centre)) return false;
+  auto add = [&](std::size_t p, double amount) {
+    map.film[p] = std::min(1.0f, map.film[p] + static_cast<float>(amount));
+  };
+  const sim::PixelSpan span = pixels.span(centre);
+  const double patch = 3.14159265358979323846 * radius * radius;
+  const double pixel = span.across_m * span.along_m;
+  if (patch < pixel) {
+    add(centre, stir * patch / pixel);
+    return true;
+  }
+  // Larger than a pixel: the pixels around whose ground is within the radius.
+  const int reach = static_cast<int>(std::ceil(radius / span.across_m)) + 1;
+  const int i0 = std::max(0, static_cast<int>(column) - reach);
+  const int i1 = std::min(w - 1, static_cast<int>(column) + reach);
+  const int j0 = std::max(0, static_cast<int>(row) - reach);
+  const int j1 = std::min(h - 1, static_cast<int>(row) + reach);
+  for (int j = j0; j <= j1; ++j) {
+    for (int i = i0; i <= i1; ++i) {
+      const std::size_t p = static_cast<std::size_t>(j) * w + i;
+      if (pixels.hits(p) && std::hypot(pixels.x(p) - ripple.x, pixels.z(p) - ripple.z) <= radius) {
+        add(p, stir);
+      }
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
 void draw_ripples(const GroundPixels& pixels, const std::vector<sim::Ripple>& ripples,
                   RippleMap& map) {
   const int w = pixels.width(), h = pixels.height();
@@ -118,6 +162,10 @@ void draw_ripples(const GroundPixels& pixels, const std::vector<sim::Ripple>& ri
   map.film.assign(n, 0.0f);
   bool drawn = false;
   for (const sim::Ripple& ripple : ripples) {
+    if (!ripple.on_puddle) {
+      drawn = stir_film(pixels, ripple, map) || drawn;
+      continue;
+    }
     const double reach = sim::ripple_reach(ripple);
     // The ring's square on the ground, projected: its screen box.
     double c0 = 1e300, c1 = -1e300, r0 = 1e300, r1 = -1e300;
@@ -145,11 +193,6 @@ void draw_ripples(const GroundPixels& pixels, const std::vector<sim::Ripple>& ri
             sim::ripple_at(ripple, pixels.x(p), pixels.z(p), pixels.span(p));
         if (s.height == 0.0 && s.slope_x == 0.0 && s.slope_z == 0.0) continue;
         drawn = true;
-        if (!ripple.on_puddle) {
-          const double slope = std::sqrt(s.slope_x * s.slope_x + s.slope_z * s.slope_z);
-          map.film[p] = std::min(1.0f, map.film[p] + static_cast<float>(slope / kFilmSlopeFull));
-          continue;
-        }
         map.height_m[p] += static_cast<float>(s.height);
       }
     }

@@ -27,8 +27,6 @@ namespace raintrace::povgen {
 
 /// Height range of the ripple map, m: R = 0.5 + height / kRippleHeightRange.
 inline constexpr double kRippleHeightRange = 0.004;
-/// The film counts as fully stirred (A = 1) where its dimples tilt it by this slope.
-inline constexpr double kFilmSlopeFull = 0.05;
 
 /// Where each pixel's ray meets the ground plane y = ground_y (pixel centres, the camera of
 /// POV-Ray's `camera { location look_at right x*aspect angle fov }`).

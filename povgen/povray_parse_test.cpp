@@ -15,39 +15,13 @@
 #include "povgen/frame_text.h"
 #include "povgen/frame_values.h"
 #include "povgen/output_folder.h"
+#include "povgen/povray_test_support.h"
 #include "povgen/synthetic_rain.h"
 
 namespace raintrace::povgen {
 namespace {
 
 namespace fs = std::filesystem;
-
-bool have_povray() { return std::system("command -v povray >/dev/null 2>&1") == 0; }
-
-#define SKIP_WITHOUT_POVRAY() \
-  if (!have_povray()) GTEST_SKIP() << "povray is not installed: POV-Ray tests skipped"
-
-/// Runs povray in `dir` with `args`; returns its exit status and leaves its output in povray.log.
-int run_povray(const fs::path& dir, const std::string& args) {
-  const std::string command =
-      "cd '" + dir.string() + "' && povray " + args + " -D -V >povray.log 2>&1";
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-std::string log_of(const fs::path& dir) {
-  return read_file_bytes(dir / "povray.log").substr(0, 4000);
-}
-
-/// Decoded RGB pixels in 0..1 (PNG bytes differ between identical renders: compare pixels).
-std::vector<float> read_rgb(const fs::path& path) {
-  auto in = OIIO::ImageInput::open(path.string());
-  if (!in) return {};
-  const OIIO::ImageSpec& spec = in->spec();
-  std::vector<float> px(static_cast<std::size_t>(spec.width) * spec.height * 3);
-  in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, px.data());
-  return px;
-}
 
 double mean_abs_difference(const std::vector<float>& a, const std::vector<float>& b) {
   double sum = 0.0;

@@ -64,6 +64,16 @@ double ripple_slope_rms(double rate_mm_per_h, double lifetime_s) {
   return std::sqrt(mean_square);
 }
 
+double stirred_radius(const Ripple& ripple) {
+  return ripple.start_radius_m + ripple_speed() * ripple.age_s + kPacketWidth * ripple_wavelength();
+}
+
+double film_stir(const Ripple& ripple) {
+  if (!(ripple.lifetime_s > 0.0f)) return 0.0;
+  const double fade = 1.0 - ripple.age_s / ripple.lifetime_s;
+  return fade * fade;
+}
+
 double ripple_reach(const Ripple& ripple) {
   const double front = ripple.start_radius_m + ripple_speed() * ripple.age_s;
   return front + 3.0 * kPacketWidth * ripple_wavelength();

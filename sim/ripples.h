@@ -61,6 +61,14 @@ RippleSample ripple_at(const Ripple& ripple, double x, double z, const PixelSpan
 /// Largest distance from its centre at which the ripple is not flat (m).
 double ripple_reach(const Ripple& ripple);
 
+/// A film ripple as a stirred patch: within radius stirred_radius() of the impact (the ring's
+/// front plus a packet width) the film is disturbed with strength film_stir() — 1 when fresh,
+/// fading with the ring as (1 − t/T)². The renderer darkens the film's reflection by it,
+/// spread over a pixel where the patch is smaller than one: it stays an effect of the impact's
+/// place and time, never a ring smoothed to nothing.
+double stirred_radius(const Ripple& ripple);
+double film_stir(const Ripple& ripple);
+
 /// Root-mean-square slope of standing water under rain of `rate_mm_per_h` whose rings last
 /// `lifetime_s`: the roughness of a puddle seen from too far for its rings to be drawn.
 /// Each ring contributes ∫∫ ½·(k·a(t)·envelope)² dA dt = π^{3/2}·k²·a0²·r0·w·T/5 with

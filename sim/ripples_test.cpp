@@ -3,6 +3,10 @@
 
 #include <gtest/gtest.h>
 #include <cmath>
+#include <map>
+#include <utility>
+
+#include "sim/world.h"
 
 namespace raintrace::sim {
 namespace {
@@ -86,6 +90,58 @@ TEST(Ripples, SlantSmoothsTheRingWhereItRunsAlongTheLineOfSight) {
   const double sharp = ripple_at(r, radius, 0.0).height;
   EXPECT_NEAR(ripple_at(r, 0.0, radius, span).height / sharp, 0.78, 0.01);
   EXPECT_NEAR(ripple_at(r, radius, 0.0, span).height / sharp, 0.02, 0.005);
+}
+
+TEST(Ripples, RoughnessOfRainedOnWaterMatchesTheClosedForm) {
+  // The rings of a simulated 10 mm/h on big puddles, summed at 400 points deep inside them:
+  // their mean square slope is ripple_slope_rms()² (within 15 %: the points see a few hundred
+  // rings each, and the closed form leaves out the envelope's own slope, +3.5 %, and rings cut
+  // short by a puddle's edge).
+  SimParams p;
+  p.puddles.coverage = 0.9;
+  p.puddles.size_m = 20.0;
+  // Somewhere deep in a puddle, looked at steeply from 1.5 m (about 2 m² of ground in view).
+  const PuddleField field(p.puddles, p.puddles.seed);
+  double x0 = 0.0;
+  while (field.value(x0, 0.0) < field.threshold() + 1.0) x0 += 0.5;
+  p.camera.position = {x0, 1.5, -0.5};
+  p.camera.look_at = {x0, 0.0, 0.0};
+  p.camera.width_px = 100000;  // every ring drawn, none left to the roughness
+  p.rain.far_m = 2.0;
+  p.rain.rate_mm_per_h = 10.0;
+  p.splashes.enabled = false;
+  World world(p);
+  world.advance_to(1.0);
+  const Frame f = world.snapshot(1);
+  // Rings by 5 cm cell, so each point sums only those that can reach it.
+  std::map<std::pair<int, int>, std::vector<const Ripple*>> cells;
+  auto cell = [](double v) { return static_cast<int>(std::floor(v / 0.05)); };
+  for (const Ripple& r : f.ripples) cells[{cell(r.x), cell(r.z)}].push_back(&r);
+  double sum = 0.0;
+  int points = 0;
+  for (int i = 0; i < 20; ++i) {
+    for (int j = 0; j < 20; ++j) {
+      const double x = x0 - 0.5 + 0.05 * i, z = -0.5 + 0.05 * j;
+      if (world.puddles().depth_m(x, z) < 5.9e-3) continue;  // deep inside: full depth
+      double sx = 0.0, sz = 0.0;
+      for (int a = -3; a <= 3; ++a) {
+        for (int b = -3; b <= 3; ++b) {
+          const auto it = cells.find({cell(x) + a, cell(z) + b});
+          if (it == cells.end()) continue;
+          for (const Ripple* r : it->second) {
+            const RippleSample s = ripple_at(*r, x, z);
+            sx += s.slope_x;
+            sz += s.slope_z;
+          }
+        }
+      }
+      sum += sx * sx + sz * sz;
+      ++points;
+    }
+  }
+  ASSERT_GT(points, 100);
+  const double rms = ripple_slope_rms(10.0, 0.5);
+  EXPECT_NEAR(std::sqrt(sum / points) / rms, 1.0, 0.15) << points << " points";
 }
 
 }  // namespace
