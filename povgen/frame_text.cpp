@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "povgen/ground_scene.h"
-#include "povgen/manifest.h"
+#include "povgen/content_hash.h"
 #include "povgen/number_format.h"
 #include "povgen/ordered_chunks.h"
 
