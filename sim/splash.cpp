@@ -157,23 +157,27 @@ Droplet crown_droplet(const CrownSplash& crown, const ImpactInput& impact, int k
 }
 
 void launch_droplets(const CrownSplash& crown, const ImpactInput& impact, double impact_time_s,
-                     float weight, double pixel_m, std::uint64_t seed,
+                     float weight, double pixel_m, double exposure_s, std::uint64_t seed,
                      std::vector<FlyingDroplet>& out) {
-  // The test against the largest droplet first spares computing those surely dropped.
+  // The share of a pixel's light one droplet blocks: its width over the pixel's (at most 1),
+  // times the share of its streak's pixels it covers in time, d over the streak's length (or
+  // over a pixel, for a streak shorter than one). The width alone bounds it: testing that first
+  // spares computing the droplets surely dropped.
   const double largest = pixel_m > 0.0 ? weight * crown.max_diameter_m / pixel_m : 0.0;
   for (int k = 0; k < crown.droplets; ++k) {
+    const double u = unit(seed, impact.key, droplet_dim(k, 3));
+    if (pixel_m > 0.0 && u >= largest) continue;
+    const Droplet drop = crown_droplet(crown, impact, k, seed);
     float kept_weight = weight;
     if (pixel_m > 0.0) {
-      const double u = unit(seed, impact.key, droplet_dim(k, 3));
-      if (u >= largest) continue;
-      const double coverage =
-          weight * droplet_diameter(crown, unit(seed, impact.key, droplet_dim(k, 0))) / pixel_m;
+      const double d = drop.diameter_m;
+      const double streak = std::max({glm::length(drop.velocity) * exposure_s, pixel_m, d});
+      const double coverage = weight * std::min(1.0, d / pixel_m) * (d / streak);
       if (coverage < 1.0) {
         if (u >= coverage) continue;
         kept_weight = static_cast<float>(weight / coverage);
       }
     }
-    const Droplet drop = crown_droplet(crown, impact, k, seed);
     FlyingDroplet f;
     f.id = hash_key(seed, Stream::splash, impact.key, droplet_dim(k, 7));
     f.impact_time_s = impact_time_s;
@@ -235,9 +239,11 @@ void add_droplet(const SplashParams& params, const FlyingDroplet& droplet, doubl
 }
 
 void add_splash_droplets(const SplashParams& params, const ImpactInput& impact, double age_s,
-                         float weight, double pixel_m, std::uint64_t seed, Drops& out) {
+                         float weight, double pixel_m, double exposure_s, std::uint64_t seed,
+                         Drops& out) {
   std::vector<FlyingDroplet> droplets;
-  launch_droplets(crown_splash(params, impact, seed), impact, 0.0, weight, pixel_m, seed, droplets);
+  launch_droplets(crown_splash(params, impact, seed), impact, 0.0, weight, pixel_m, exposure_s,
+                  seed, droplets);
   for (FlyingDroplet& d : droplets) {
     fly(d, age_s);
     add_droplet(params, d, age_s, out);

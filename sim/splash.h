@@ -111,11 +111,15 @@ struct FlyingDroplet {
 
 /// Launches the droplets of an impact's crown (k < crown.droplets) from the ground with their
 /// launch velocity, appended to `out`. Level of detail: with pixel_m > 0 (the width of a pixel at
-/// the impact), a droplet whose weight × diameter covers a share c < 1 of a pixel's width is
-/// kept with probability c and then weighs weight / c — the expected light per pixel stays, and
-/// a far crown costs a few droplets instead of dozens that would not show.
+/// the impact), a droplet whose weight × share of its pixels' light is c < 1 — its width over a
+/// pixel's, times d / (its streak's length in `exposure_s`, at least a pixel): a fast droplet
+/// covers each point of its streak for a moment only (Garg & Nayar) — is kept with probability
+/// c and then weighs weight / c, so that it blocks a whole pixel's light along its streak. The
+/// expected light per pixel stays, and a crown costs the few droplets that show instead of
+/// dozens that would not. (Taken at the launch speed: a droplet slowed by drag later is a little
+/// too bright.)
 void launch_droplets(const CrownSplash& crown, const ImpactInput& impact, double impact_time_s,
-                     float weight, double pixel_m, std::uint64_t seed,
+                     float weight, double pixel_m, double exposure_s, std::uint64_t seed,
                      std::vector<FlyingDroplet>& out);
 
 /// Advances the droplet in whole steps up to floor(age_s / step) under gravity and quadratic
@@ -131,6 +135,7 @@ void add_droplet(const SplashParams& params, const FlyingDroplet& droplet, doubl
 
 /// Everything at once, for one impact `age_s` after it (launch, fly, add). Pure.
 void add_splash_droplets(const SplashParams& params, const ImpactInput& impact, double age_s,
-                         float weight, double pixel_m, std::uint64_t seed, Drops& out);
+                         float weight, double pixel_m, double exposure_s, std::uint64_t seed,
+                         Drops& out);
 
 }  // namespace raintrace::sim

@@ -382,7 +382,8 @@ void World::add_ground_effects(Frame& f) const {
       continue;
     }
     launch_droplets(impact.crown, impact_input(impact), impact.time_s, impact.weight,
-                    m_detail.pixel_m(glm::dvec3(impact.position)), m_params.seed, m_flying);
+                    m_detail.pixel_m(glm::dvec3(impact.position)), m_params.camera.exposure_s,
+                    m_params.seed, m_flying);
   }
   m_flying_until_s = std::max(m_flying_until_s, f.time_s);
   std::erase_if(m_flying, [&](FlyingDroplet& d) {
