@@ -12,8 +12,8 @@
 #include <string_view>
 #include <vector>
 
-#include "povgen/ground_scene.h"
 #include "povgen/content_hash.h"
+#include "povgen/ground_scene.h"
 #include "povgen/number_format.h"
 #include "povgen/ordered_chunks.h"
 

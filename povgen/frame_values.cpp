@@ -237,22 +237,6 @@ void build_frame_values(const sim::Frame& frame, const ExportParams& look, Frame
 
   add_splash_droplets(DropContext{ctx, frame.splashes, drops.split}, look.splash_keep, values);
 
-  values.ripples = RippleMap{};
-  values.ground = ground_applies(look);
-  values.time_s = frame.time_s;
-  // A frame that draws the plate shows the plate's puddles, whatever its rings: no map then.
-  const bool traced = !environment_plate_applies(look) || frame.flash > 0.0f ||
-                      std::any_of(values.bolts.begin(), values.bolts.end(),
-                                  [](const BoltValue& b) { return !b.segments.empty(); });
-  if (values.ground && traced && !frame.ripples.empty()) {
-    if (!values.ground_pixels.matches(look.camera, look.width, look.height,
-                                      look.ground.ground_y_m)) {
-      values.ground_pixels =
-          GroundPixels(look.camera, look.width, look.height, look.ground.ground_y_m);
-    }
-    draw_ripples(values.ground_pixels, frame.ripples, values.ripples);
-  }
-
   values.flash = std::clamp(frame.flash, 0.0f, 1.0f);
   values.flash_position = default_flash_position(view);
   float brightest = -1.0f;
@@ -273,6 +257,29 @@ void build_frame_values(const sim::Frame& frame, const ExportParams& look, Frame
       }
     }
     if (!out.segments.empty()) values.bolts.push_back(std::move(out));
+  }
+
+  // The wet ground: a frame that draws the environment plate shows the plate's puddles (no
+  // map); a traced one gets its map of rings and the ground's state.
+  values.ripples = RippleMap{};
+  values.ground = ground_applies(look);
+  values.time_s = frame.time_s;
+  const bool traced =
+      !environment_plate_applies(look) || values.flash > 0.0f || !values.bolts.empty();
+  if (values.ground && traced) {
+    const sim::PuddleParams& puddles = look.ground.puddles;
+    const sim::PuddleParams& drawn = values.puddle_share_for;
+    if (!values.ground_pixels.matches(look.camera, look.width, look.height,
+                                      look.ground.ground_y_m) ||
+        values.puddle_share.empty() || drawn.coverage != puddles.coverage ||
+        drawn.size_m != puddles.size_m || drawn.seed != puddles.seed) {
+      values.puddle_share_for = puddles;
+      values.ground_pixels =
+          GroundPixels(look.camera, look.width, look.height, look.ground.ground_y_m);
+      values.puddle_share = puddle_mask(
+          values.ground_pixels, sim::PuddleField(look.ground.puddles, look.ground.puddles.seed));
+    }
+    draw_ripples(values.ground_pixels, values.puddle_share, frame.ripples, values.ripples);
   }
 }
 

@@ -4,9 +4,9 @@
 #include <fcntl.h>
 #include <unistd.h>
 #include <cerrno>
-#include <functional>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -101,9 +101,8 @@ std::string write_frame_file(const std::filesystem::path& path, const FrameValue
     std::error_code made;
     std::filesystem::create_directories(map.parent_path(), made);
     if (made) throw_system_error(made.value(), "cannot create " + map.parent_path().string());
-    write_image_atomic(map, [&](const std::filesystem::path& to) {
-      write_ripple_png(to, values.ripples);
-    });
+    write_image_atomic(
+        map, [&](const std::filesystem::path& to) { write_ripple_png(to, values.ripples); });
   }
   std::filesystem::path tmp = path;
   tmp += ".tmp";
@@ -173,9 +172,8 @@ std::string write_shared_files(const std::filesystem::path& out_dir, const Expor
     std::filesystem::remove(out_dir / "mask.ini");
   }
   const std::filesystem::path atlas = out_dir / kStreakAtlas;
-  write_image_atomic(atlas, [](const std::filesystem::path& to) {
-    write_streak_atlas(to, StreakAtlasLayout{});
-  });
+  write_image_atomic(
+      atlas, [](const std::filesystem::path& to) { write_streak_atlas(to, StreakAtlasLayout{}); });
   all += kStreakAtlas;
   all += '\0';
   all += read_file_bytes(atlas);

@@ -144,34 +144,48 @@ TEST(PovRayGround, RipplesAppearWhereTheirImpactsWereAndSpreadWithTime) {
 TEST(PovRayGround, SplashesGoOnPastTheSimulatedVolumeWithoutAnEdge) {
   SKIP_WITHOUT_POVRAY();
   // Heavy rain simulated to far_m = 6 m only, the camera looking down the street; the rain mask
-  // of the splashes alone (the falling drops taken out). The splash light per image row,
-  // against the distance of the ground that row sees, is continuous across far_m: the rows just
-  // beyond see as much splash, within the noise of one frame, as the rows just before.
+  // of the splashes alone (the falling drops taken out) in 8 frames, a still exposure so that
+  // more droplets are kept. The splash light per image row, against the distance of the ground
+  // that row sees, is continuous across far_m: the rows just beyond see about as much splash
+  // as the rows just before.
   sim::SimParams sim;
   sim.camera.look_at = {0.0, 1.0, 0.0};
   sim.camera.aspect = 640.0 / 360.0;
   sim.camera.width_px = 640;
+  sim.camera.exposure_s = 0.0;
   sim.rain.rate_mm_per_h = 30.0;
   sim.rain.far_m = 6.0;
   sim.ripples.enabled = false;
   sim::World world(sim);
-  world.advance_to(0.5);
-  sim::Frame frame = world.snapshot(1);
-  frame.drops = sim::Drops{};
+  std::vector<sim::Frame> frames;
+  for (int n = 1; n <= 8; ++n) {
+    world.advance_to(0.5 + n / 24.0);
+    frames.push_back(world.snapshot(n));
+    frames.back().drops = sim::Drops{};
+  }
   ExportParams look;
   look.camera = sim.camera;
   look.mask = true;
   look.min_streak_coverage = 0.0;
   look.splash_keep = 1.0;
-  const fs::path dir = wet_folder("edge", look, {frame});
-  write_file_atomic(dir / "frames" / "mask_0001.pov", mask_text("frames/frame_0001.pov"));
-  ASSERT_EQ(run_povray(dir, "mask.ini"), 0) << log_of(dir);
-  const auto px = read_rgb(dir / "images" / "mask_0001.png");
-  ASSERT_FALSE(px.empty());
+  const fs::path dir = wet_folder("edge", look, frames);
+  std::vector<float> px;
+  for (int n = 1; n <= 8; ++n) {
+    const std::string name = frame_file_name("mask", n, 4, ".pov");
+    write_file_atomic(dir / "frames" / name,
+                      mask_text("frames/" + frame_file_name("frame", n, 4, ".pov")));
+  }
+  ASSERT_EQ(run_povray(dir, "mask.ini +SF1 +EF8"), 0) << log_of(dir);
+  for (int n = 1; n <= 8; ++n) {
+    const auto one = read_rgb(dir / "images" / frame_file_name("mask", n, 4, ".png"));
+    ASSERT_FALSE(one.empty());
+    px.resize(one.size(), 0.0f);
+    for (std::size_t i = 0; i < one.size(); ++i) px[i] += one[i];
+  }
   // The volume's footprint ends fb1 ahead of the eye along the view (+z here). Each image row
-  // sees the ground at one distance: the mean splash light of the 12 rows just short of that
-  // edge and of the 12 just past it. Light per pixel grows gently with distance (a pixel sees
-  // more ground, at a slant), by ~1.2× over those rows; an edge would drop it to nothing.
+  // sees the ground at one distance: the splash light of the 16 rows just short of that edge
+  // and of the 16 just past it. Light per pixel grows gently with distance (a pixel sees more
+  // ground, at a slant); an edge would drop it to nothing.
   const double edge_z = world.region().origin().z + world.region().fb1();
   const GroundPixels pixels(look.camera, look.width, look.height, 0.0);
   std::vector<double> light(static_cast<std::size_t>(look.height), 0.0);
@@ -184,10 +198,10 @@ TEST(PovRayGround, SplashesGoOnPastTheSimulatedVolumeWithoutAnEdge) {
       light[static_cast<std::size_t>(j)] += px[3 * (static_cast<std::size_t>(j) * look.width + i)];
     }
   }
-  ASSERT_GT(edge_row, 12);
-  ASSERT_LT(edge_row + 12, look.height);
+  ASSERT_GT(edge_row, 16);
+  ASSERT_LT(edge_row + 16, look.height);
   double before = 0.0, beyond = 0.0;
-  for (int k = 0; k < 12; ++k) {
+  for (int k = 0; k < 16; ++k) {
     before += light[static_cast<std::size_t>(edge_row + k)];
     beyond += light[static_cast<std::size_t>(edge_row - 1 - k)];
   }
