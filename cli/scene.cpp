@@ -128,8 +128,8 @@ void check_include(const TableReader& r, povgen::EnvironmentParams& environment,
 /// have no paved ground to hold them.
 constexpr double kNightStreetPuddleCoverage = 0.25;
 
-/// The ground povgen draws: the simulation's puddles ("automatic" coverage resolved), ripples,
-/// rain rate and ground height.
+/// The ground povgen draws: the simulation's puddles ("automatic" coverage resolved), ripples
+/// and ground height (the rain's rate it takes from look.rain).
 void resolve_ground(Scene& scene) {
   sim::PuddleParams& puddles = scene.sim.puddles;
   if (puddles.coverage < 0.0) {
@@ -140,7 +140,6 @@ void resolve_ground(Scene& scene) {
   povgen::GroundLook& ground = scene.look.ground;
   ground.puddles = puddles;
   ground.ripples = scene.sim.ripples;
-  ground.rain_rate_mm_per_h = scene.sim.rain.rate_mm_per_h;
   ground.ground_y_m = scene.sim.ground_y_m;
 }
 
@@ -180,6 +179,7 @@ Scene load_scene_string(std::string_view toml_text, const std::string& source_na
   scene.sim.camera.aspect = static_cast<double>(scene.look.width) / scene.look.height;
   scene.sim.camera.width_px = scene.look.width;
   scene.look.camera = scene.sim.camera;
+  scene.look.rain = scene.sim.rain;
   resolve_ground(scene);
   return scene;
 }

@@ -13,12 +13,13 @@ void validate(const ExportParams& look) {
   sim::validate(look.camera);
   sim::check_params<ExportParams>(kExportParams, look);
   sim::check_params<FogParams>(kFogParams, look.fog);
-  // The ground's numbers reach scene.inc and the masks: the simulation's own ranges.
+  // The rain's rate and sizes reach scene.inc (the rain medium, the ripples' roughness) and
+  // the ground's numbers scene.inc and the masks: the simulation's own ranges.
+  sim::check_params<sim::RainParams>(sim::kRainParams, look.rain);
   sim::check_params<sim::PuddleParams>(sim::kPuddleParams, look.ground.puddles);
   sim::check_params<sim::RippleParams>(sim::kRippleParams, look.ground.ripples);
-  if (!(look.ground.rain_rate_mm_per_h >= 0.0 && look.ground.rain_rate_mm_per_h <= 500.0) ||
-      !std::isfinite(look.ground.ground_y_m)) {
-    throw std::invalid_argument("ground: rain rate must be in [0, 500] mm/h, ground_y_m finite");
+  if (!std::isfinite(look.ground.ground_y_m)) {
+    throw std::invalid_argument("ground: ground_y_m must be finite");
   }
   // The name goes into no text, but an unknown one would silently pick no environment.
   if (look.environment.include_path.empty()) environment_template(look.environment.name);

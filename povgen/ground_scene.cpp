@@ -26,7 +26,7 @@ std::string ground_scene_text(const ExportParams& look) {
   text += "#declare RT_RippleHeightRange=" + format_number(kRippleHeightRange) + ";\n";
   const double roughness =
       look.ground.ripples.enabled
-          ? sim::ripple_slope_rms(look.ground.rain_rate_mm_per_h, look.ground.ripples.lifetime_s)
+          ? sim::ripple_slope_rms(look.rain.rate_mm_per_h, look.ground.ripples.lifetime_s)
           : 0.0;
   text += "#declare RT_RippleRoughness=" + format_number(roughness) + ";\n";
   text += "#declare RT_RippleWavelength=" + format_number(sim::ripple_wavelength()) + ";\n";

@@ -18,7 +18,7 @@ namespace fs = std::filesystem;
 ExportParams with_puddles() {
   ExportParams look;
   look.ground.puddles.coverage = 0.25;
-  look.ground.rain_rate_mm_per_h = 5.0;
+  look.rain.rate_mm_per_h = 5.0;
   return look;
 }
 

@@ -23,6 +23,9 @@ namespace raintrace::povgen {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::log_of;
+using testing::read_rgb;
+using testing::run_povray;
 
 /// A wet ground plane (RT_WetGround over a dark asphalt) under a sky of smooth bright and dark
 /// horizontal bands, so that a tilt of the water changes the colour it mirrors in proportion.
@@ -43,7 +46,7 @@ light_source { <0, 50, 0> color rgb 0.2 }
 /// A folder whose environment is kWetPlane, with frames 1..n from `frames`.
 fs::path wet_folder(const std::string& name, const ExportParams& base,
                     const std::vector<sim::Frame>& frames) {
-  const fs::path dir = fs::temp_directory_path() / ("raintrace_povray_ground_" + name);
+  const fs::path dir = testing::scratch_folder("povray_ground_" + name);
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::ofstream(dir / "wet.inc") << kWetPlane;
@@ -71,7 +74,7 @@ TEST(PovRayGround, RipplesAppearWhereTheirImpactsWereAndSpreadWithTime) {
   look.camera.look_at = {0.0, 0.0, 1.5};
   look.ground.puddles.coverage = 0.9;
   look.ground.puddles.size_m = 20.0;
-  look.ground.rain_rate_mm_per_h = 0.0;
+  look.rain.rate_mm_per_h = 0.0;
   // A point deep in a puddle, near the middle of the view.
   const sim::PuddleField field(look.ground.puddles, look.ground.puddles.seed);
   double x0 = 0.0;
