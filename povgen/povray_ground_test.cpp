@@ -93,7 +93,9 @@ TEST(PovRayGround, RipplesAppearWhereTheirImpactsWereAndSpreadWithTime) {
     ASSERT_EQ(run_povray(dir, "scene.ini +SF" + std::to_string(n) + " +EF" + std::to_string(n)), 0)
         << log_of(dir);
   }
-  const auto flat = read_rgb(dir / "images" / "frame_0003.png");
+  // POV-Ray writes the frames as scene-linear OpenEXR (scene.ini's Output_File_Type=E).
+  const auto flat = read_rgb(dir / "images" / "frame_0003.exr");
+  ASSERT_FALSE(flat.empty()) << "no frame_0003.exr in " << dir;
   const GroundPixels pixels(look.camera, look.width, look.height, 0.0);
   double column = 0.0, row = 0.0;
   ASSERT_TRUE(pixels.project(impact.x, impact.z, column, row));
@@ -101,7 +103,7 @@ TEST(PovRayGround, RipplesAppearWhereTheirImpactsWereAndSpreadWithTime) {
   // the ground within which 90 % of the change lies (the outer edge of the ring's packet of
   // crests, which keeps its shape as it moves out; within 12 cm of the impact, beyond its reach).
   auto changes = [&](int n, double& centre_column, double& centre_row, double& radius) {
-    const auto px = read_rgb(dir / "images" / frame_file_name("frame", n, 4, ".png"));
+    const auto px = read_rgb(dir / "images" / frame_file_name("frame", n, 4, ".exr"));
     ASSERT_EQ(px.size(), flat.size());
     double weight = 0.0, sum_c = 0.0, sum_r = 0.0;
     std::vector<std::pair<double, double>> by_distance;
