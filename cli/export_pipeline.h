@@ -17,7 +17,7 @@ struct ExportProgress {
 };
 
 /// Simulates frames 1..range.last (earlier frames are simulated but not written: the state
-/// depends on all of them) and writes the folder layout of shared/DESIGN.md into out_dir:
+/// depends on all of them) and writes the folder layout of docs/design.md into out_dir:
 /// scene.ini, scene.inc, frames/, textures/, manifest.json. Frames whose .pov text is unchanged
 /// keep their manifest status, so a re-export does not force re-rendering.
 void export_scene(const Scene& scene, const FrameRange& range, const std::filesystem::path& out_dir,

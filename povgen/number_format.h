@@ -1,5 +1,5 @@
 // Numbers as POV-Ray text: 7 significant digits, shortest form, no locale, no printf.
-// POV-Ray spends ~1 µs parsing each number whatever its length (shared/POVRAY-NOTES.md), and
+// POV-Ray spends ~1 µs parsing each number whatever its length (docs/povray-notes.md), and
 // 4 digits visibly move metre-scale geometry, so 7 digits is the floor and the ceiling.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Test helper: writes a tiny hand-made output folder in the layout of shared/DESIGN.md
+// Test helper: writes a tiny hand-made output folder in the layout of docs/design.md
 // (scene.ini, scene.pov dispatcher, frames/frame_NNNN.pov, manifest.json), so render/ can be
 // tested without the simulator or the exporter.
 #pragma once

@@ -2,7 +2,7 @@
 # Renders the reference frames of one example, the one recipe shared by the reference test and
 # update.sh: a copy of the scene at 160×90, preview quality (no antialiasing, so no jitter) and
 # frames 1..N, exported with `raintrace export`, then rendered by plain `povray scene.ini` in the
-# output folder (DESIGN.md: the folder renders without raintrace). Leaves WORKDIR/out/images/.
+# output folder (docs/design.md: the folder renders without raintrace). Leaves WORKDIR/out/images/.
 # Usage: render_example.sh RAINTRACE EXAMPLE.toml WORKDIR [FRAMES=2]
 set -euo pipefail
 raintrace=$1
@@ -28,7 +28,7 @@ awk -v frames="$frames" '
   echo "render_example.sh: 'raintrace export' failed for $example (log: $work/export.log)" >&2
   exit 1
 }
-# -D: no display; one thread, so even jittered effects would repeat (POVRAY-NOTES).
+# -D: no display; one thread, so even jittered effects would repeat (docs/povray-notes.md).
 (cd "$work/out" && povray scene.ini -D +WT1 > "$work/povray.log" 2>&1) || {
   tail -20 "$work/povray.log" >&2
   echo "render_example.sh: povray failed in $work/out (log: $work/povray.log)" >&2
