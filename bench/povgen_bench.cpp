@@ -7,7 +7,7 @@
 #include "povgen/export_params.h"
 #include "povgen/frame_text.h"
 #include "povgen/frame_values.h"
-#include "povgen/synthetic_rain.h"
+#include "povgen/test_support/synthetic_rain.h"
 
 namespace {
 
@@ -17,7 +17,8 @@ const sim::Frame& rain(std::size_t count) {
   static std::size_t cached_count = 0;
   static sim::Frame cached;
   if (cached_count != count) {
-    cached = povgen::synthetic_rain(count, povgen::ExportParams{}.camera, 16.0 / 9.0, 12.0, 1.5);
+    cached = povgen::test_support::synthetic_rain(count, povgen::ExportParams{}.camera, 16.0 / 9.0,
+                                                  12.0, 1.5);
     cached_count = count;
   }
   return cached;

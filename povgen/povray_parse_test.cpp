@@ -15,7 +15,7 @@
 #include "povgen/frame_text.h"
 #include "povgen/frame_values.h"
 #include "povgen/output_folder.h"
-#include "povgen/synthetic_rain.h"
+#include "povgen/test_support/synthetic_rain.h"
 
 namespace raintrace::povgen {
 namespace {
@@ -67,8 +67,9 @@ fs::path make_folder(const std::string& name, ExportParams look, int frames = 1,
   fs::remove_all(dir);
   write_shared_files(dir, look, frames, dir);
   for (int n = 1; n <= frames; ++n) {
-    sim::Frame frame = synthetic_rain(drops, look.camera, double(look.width) / look.height, 12.0,
-                                      1.0, static_cast<std::uint64_t>(n));
+    sim::Frame frame =
+        test_support::synthetic_rain(drops, look.camera, double(look.width) / look.height, 12.0,
+                                     1.0, static_cast<std::uint64_t>(n));
     frame.index = n;
     frame.splashes.position = {{0.2f, 0.01f, 1.0f}};
     frame.splashes.velocity = {{0.0f, 1.0f, 0.0f}};
