@@ -25,9 +25,11 @@ constexpr double kMergeInterval_s = 0.04;
 // A drop fainter than this can no longer be seen (1/255 of full opacity).
 constexpr float kMinOpacity = 1.0f / 255.0f;
 
-Wind make_wind(const SimParams& p) {
-  validate(p);  // first member initialised from params: validate before anything uses them
-  return Wind(p.wind, p.seed);
+/// params, once validated: World's first member is initialised from it, so nothing uses a
+/// value before it has been checked.
+const SimParams& validated(const SimParams& params) {
+  validate(params);
+  return params;
 }
 
 // How far beyond the steady wind drops may drift sideways, as a speed, m/s. Gusts and
@@ -35,7 +37,7 @@ Wind make_wind(const SimParams& p) {
 // peak; a quarter of the gust peak and half the turbulence RMS cover it (more would multiply
 // the drops simulated out of view for nothing).
 double wind_spread(const WindParams& w) {
-  return (w.gusts ? 0.25 * 0.1 * w.gust_strength : 0.0) + 0.5 * w.turbulence_m_per_s;
+  return (w.gusts ? 0.25 * kGustPeak * w.gust_strength : 0.0) + 0.5 * w.turbulence_m_per_s;
 }
 
 double default_prewarm(const SimParams& p) {
@@ -47,9 +49,9 @@ double default_prewarm(const SimParams& p) {
 }  // namespace
 
 World::World(const SimParams& params)
-    : m_params(params),
-      m_view((validate(params), params.camera), params.rain.near_m, params.rain.far_m),
-      m_wind(make_wind(params)),
+    : m_params(validated(params)),
+      m_view(params.camera, params.rain.near_m, params.rain.far_m),
+      m_wind(params.wind, params.seed),
       m_sizes(params.rain),
       m_region(m_view, params.ground_y_m, params.rain.ceiling_margin_m,
                glm::dvec3{params.wind.velocity_m_per_s.x, 0.0, params.wind.velocity_m_per_s.z},
