@@ -12,6 +12,7 @@
 
 #include "cli/command.h"
 #include "cli/exit_codes.h"
+#include "cli/options.h"
 #include "compare/compare_run.h"
 #include "compare/report_html.h"
 #include "compare/report_json.h"
@@ -70,31 +71,31 @@ Command register_compare_command(CLI::App& app) {
   sub->add_option("B", args->b, "Candidate image or folder")->required();
   auto& t = args->thresholds;
   sub->add_option("--fail", t.fail, "Per-channel absolute failure threshold (default 1e-6)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(not_negative());
   sub->add_option("--warn", t.warn, "Per-channel absolute warning threshold (default 1e-6)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(not_negative());
   sub->add_option("--fail-percent", t.fail_percent,
                   "Percentage of pixels allowed to fail (default 0)")
-      ->check(CLI::Range(0.0, 100.0));
+      ->check(number_in(0.0, 100.0));
   sub->add_option("--warn-percent", t.warn_percent,
                   "Percentage of pixels allowed to warn (default 0)")
-      ->check(CLI::Range(0.0, 100.0));
+      ->check(number_in(0.0, 100.0));
   sub->add_option("--fail-relative", t.fail_relative,
                   "Also require |A-B| > this * (|A|+|B|)/2 to fail (default 0: off)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(not_negative());
   sub->add_option("--warn-relative", t.warn_relative,
                   "Also require |A-B| > this * (|A|+|B|)/2 to warn (default 0: off)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(not_negative());
   sub->add_option("--hard-fail", t.hard_fail, "Fail if any one error exceeds this (default inf)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(not_negative());
   sub->add_option("--hard-warn", t.hard_warn, "Warn if any one error exceeds this (default inf)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(not_negative());
   sub->add_option("--json", args->json, "Write every number as JSON to FILE");
   sub->add_option("--html", args->html,
                   "Write an HTML report to FILE (images in <FILE stem>_files/ beside it)");
   sub->add_option("--diff", args->diff, "Write a heat-map difference PNG per frame into DIR");
   sub->add_option("--threads", args->threads, "Frames compared at once (default 2)")
-      ->check(CLI::Range(1, 256));
+      ->check(whole_number_in(1, 256));
   return {sub, [args] { return run_compare(*args); }};
 }
 

@@ -13,6 +13,7 @@
 #include "cli/command.h"
 #include "cli/exit_codes.h"
 #include "cli/export_pipeline.h"
+#include "cli/options.h"
 #include "cli/scene.h"
 
 namespace raintrace::cli {
@@ -61,7 +62,7 @@ Command register_export_command(CLI::App& app) {
   sub->add_option("scene", args->scene, "Scene file (.toml)")->required();
   sub->add_option("-o,--output", args->out, "Output folder (created if missing)")->required();
   sub->add_option("--frames", args->frames, "Frames to write: A-B or N (default: all)");
-  sub->add_option("--seed", args->seed, "Seed for every random stream (overrides the scene)");
+  add_seed_option(*sub, args->seed);
   return {sub, [args] { return run_export(*args); }};
 }
 

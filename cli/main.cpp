@@ -8,6 +8,7 @@
 
 #include "cli/command.h"
 #include "cli/exit_codes.h"
+#include "cli/options.h"
 
 namespace {
 
@@ -29,9 +30,11 @@ Exit codes: 0 success, 1 partly failed (frames, image differences), 2 unusable i
 
 int main(int argc, char** argv) {
   namespace cli = raintrace::cli;
+  // Named here rather than taken from argv[0], so usage lines read the same wherever it runs.
   CLI::App app{
       "raintrace: physically based rain, simulated and ray-traced with POV-Ray.\n"
-      "Example: raintrace render examples/default.toml -o out/default"};
+      "Example: raintrace render examples/default.toml -o out/default",
+      "raintrace"};
   app.footer(kFooter);
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string{"raintrace " RAINTRACE_VERSION});
@@ -40,10 +43,12 @@ int main(int argc, char** argv) {
       cli::register_render_command(app), cli::register_compare_command(app)};
   try {
     app.parse(argc, argv);
+  } catch (const CLI::Success& e) {
+    app.exit(e);  // --help and --version
+    return cli::exit_code::ok;
   } catch (const CLI::ParseError& e) {
-    // --help and --version exit 0; every real parse error is "bad option", exit code 2.
-    const int code = app.exit(e);
-    return code == 0 ? cli::exit_code::ok : cli::exit_code::error;
+    fmt::print(stderr, "raintrace: error: {}\n", cli::option_error_text(app, e));
+    return cli::exit_code::error;
   }
   try {
     for (const auto& command : commands) {

@@ -6,13 +6,14 @@
 //
 // Options (each with an example in --help):
 //   --frames A-B   --jobs N   --width W --height H   --quality preview|final   --mask   --force
-//   --backend local|slurm   --partition P   --tasks K   --no-movie
+//   --backend local|slurm   --partition P   --tasks K   --no-movie   --seed N
 // Hidden: --slurm-task OUT, the worker each Slurm array task runs.
 #include <fmt/core.h>
 #include <unistd.h>
 #include <CLI/CLI.hpp>
 #include <atomic>
 #include <csignal>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -26,6 +27,7 @@
 #include "cli/command.h"
 #include "cli/exit_codes.h"
 #include "cli/export_pipeline.h"
+#include "cli/options.h"
 #include "cli/scene.h"
 #include "povgen/frame_text.h"
 #include "povgen/manifest.h"
@@ -55,6 +57,7 @@ struct RenderArgs {
   int tasks = 0;
   bool no_movie = false;
   std::string slurm_task;
+  std::optional<std::uint64_t> seed;  ///< none: the scene file's seed
 };
 
 constexpr const char* kFooter = R"(
@@ -245,9 +248,10 @@ int run_render(const RenderArgs& args) {
       throw std::invalid_argument(
           "rendering an exported folder: leave out -o (or give the same folder)");
     }
-    if (args.width != 0 || args.height != 0 || !args.quality.empty()) {
+    if (args.width != 0 || args.height != 0 || !args.quality.empty() || args.seed) {
       throw std::invalid_argument(
-          "--width/--height/--quality change the scene: give the scene file, not the folder");
+          "--width/--height/--quality/--seed change the scene: give the scene file, not the "
+          "folder");
     }
     out = input;
     if (!args.frames.empty()) {
@@ -259,6 +263,7 @@ int run_render(const RenderArgs& args) {
     if (args.out.empty()) throw std::invalid_argument("-o OUT is required with a scene file");
     out = args.out;
     Scene scene = load_scene_file(input);
+    if (args.seed) scene.sim.seed = *args.seed;
     if (args.width != 0) scene.look.width = args.width;
     if (args.height != 0) scene.look.height = args.height;
     if (!args.quality.empty()) {
@@ -387,23 +392,27 @@ Command register_render_command(CLI::App& app) {
   sub->add_option("--frames", args->frames, "Frame range A-B or one frame N (default: all)");
   sub->add_option("--jobs", args->jobs,
                   "POV-Ray processes in flight (default: cores/2 + 3, i.e. 4 on 2 cores)")
-      ->check(CLI::Range(1, 256));
+      ->check(whole_number_in(1, 256));
+  // The same ranges as the scene file's [output] width and height.
+  const sim::Range size =
+      sim::find_param<povgen::ExportParams>(povgen::kExportParams, "output", "width")->range;
   sub->add_option("--width", args->width, "Image width in pixels (overrides the scene)")
-      ->check(CLI::Range(16, 8192));
+      ->check(whole_number_in(static_cast<int>(size.min), static_cast<int>(size.max)));
   sub->add_option("--height", args->height, "Image height in pixels (overrides the scene)")
-      ->check(CLI::Range(16, 8192));
+      ->check(whole_number_in(static_cast<int>(size.min), static_cast<int>(size.max)));
   sub->add_option("--quality", args->quality,
                   "preview (no antialiasing, cheaper environment effects: RT_Preview=1) or "
                   "final (adaptive antialiasing, full effects)")
-      ->check(CLI::IsMember({"preview", "final"}));
+      ->check(one_of({"preview", "final"}));
   sub->add_flag("--mask", args->mask, "Also render rain masks (images/mask_NNNN.png)");
   sub->add_flag("--force", args->force, "Re-render frames that are already up to date");
   sub->add_option("--backend", args->backend, "local (default) or slurm (one job array)")
-      ->check(CLI::IsMember({"local", "slurm"}));
+      ->check(one_of({"local", "slurm"}));
   sub->add_option("--partition", args->partition, "Slurm partition (default: the cluster's)");
   sub->add_option("--tasks", args->tasks, "Slurm array tasks (default: one per ~8 frames)")
-      ->check(CLI::Range(1, 10000));
+      ->check(whole_number_in(1, 10000));
   sub->add_flag("--no-movie", args->no_movie, "Skip the MP4 and GIF");
+  add_seed_option(*sub, args->seed);
   sub->add_option("--slurm-task", args->slurm_task, "Worker mode inside a Slurm array task")
       ->group("");
   return {
