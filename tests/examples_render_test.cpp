@@ -87,8 +87,8 @@ TEST_P(ExampleRender, RendersRainThatChangesThePicture) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, ExampleRender, ::testing::ValuesIn(examples()),
-                         [](const ::testing::TestParamInfo<fs::path>& info) {
-                           return info.param.stem().string();
+                         [](const ::testing::TestParamInfo<fs::path>& example) {
+                           return example.param.stem().string();
                          });
 
 }  // namespace

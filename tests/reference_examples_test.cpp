@@ -116,8 +116,8 @@ TEST_P(ReferenceStills, RenderMatchesReference) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, ReferenceStills, ::testing::ValuesIn(example_names()),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                           return info.param;
+                         [](const ::testing::TestParamInfo<std::string>& example) {
+                           return example.param;
                          });
 
 }  // namespace
