@@ -42,6 +42,23 @@ std::map<int, povgen::FrameEntry> previous_frames(const std::filesystem::path& p
   return frames;
 }
 
+/// The frames scene.ini renders: this export's range, widened by the frames earlier exports
+/// left in the folder that join it without a gap, so `povray scene.ini` renders frames that
+/// all exist (and, after exports in order, all the folder holds).
+povgen::FrameSubset frames_in_folder(const std::map<int, povgen::FrameEntry>& earlier,
+                                     const FrameRange& range) {
+  povgen::FrameSubset frames{range.first, range.last};
+  for (auto it = earlier.lower_bound(range.first); it != earlier.begin();) {
+    if ((--it)->first != frames.first - 1) break;
+    frames.first = it->first;
+  }
+  for (auto it = earlier.upper_bound(range.last); it != earlier.end(); ++it) {
+    if (it->first != frames.last + 1) break;
+    frames.last = it->first;
+  }
+  return frames;
+}
+
 }  // namespace
 
 void export_scene(const Scene& scene, const FrameRange& range, const std::filesystem::path& out_dir,
@@ -61,14 +78,13 @@ void export_scene(const Scene& scene, const FrameRange& range, const std::filesy
   const povgen::ExportParams& look = scene.look;
   const std::filesystem::path scene_dir =
       scene.base_dir.empty() ? scene.source.parent_path() : scene.base_dir;
-  const std::string shared_hash =
-      povgen::write_shared_files(out_dir, look, scene.frames, scene_dir);
-
   const std::filesystem::path manifest_path = out_dir / "manifest.json";
   std::map<int, povgen::FrameEntry> entries = previous_frames(manifest_path);
   for (auto it = entries.begin(); it != entries.end();) {
     it = it->first > scene.frames || it->first < 1 ? entries.erase(it) : std::next(it);
   }
+  const std::string shared_hash = povgen::write_shared_files(out_dir, look, scene.frames, scene_dir,
+                                                             frames_in_folder(entries, range));
 
   povgen::Manifest manifest;
   manifest.raintrace_version = RAINTRACE_VERSION;

@@ -65,7 +65,7 @@ fs::path make_folder(const std::string& name, ExportParams look, int frames = 1,
                      std::size_t drops = 3000) {
   const fs::path dir = fs::temp_directory_path() / ("raintrace_povray_test_" + name);
   fs::remove_all(dir);
-  write_shared_files(dir, look, frames, dir);
+  write_shared_files(dir, look, frames, dir, {1, frames});
   for (int n = 1; n <= frames; ++n) {
     sim::Frame frame =
         test_support::synthetic_rain(drops, look.camera, double(look.width) / look.height, 12.0,
