@@ -39,7 +39,10 @@ Metrics: mean/max absolute error, RMSE, PSNR = 20 log10(1/RMSE), SSIM of Rec.709
 (Wang et al. 2004: 11x11 Gaussian window sigma 1.5, C1=(0.01)^2, C2=(0.03)^2, L=1).
 Folders are matched by file name; a frame on one side only counts as a failure.
 Exit codes: 0 all pass or warn, 1 any fail or missing frame, 2 unusable input.
-Example: raintrace compare tests/reference/default out/default/images --fail 0.02 --fail-percent 1)";
+Example: the default example rendered at the size and frames of its reference stills, compared
+with them by the thresholds tests/reference/thresholds.json gives it:
+  raintrace render examples/default.toml -o out/check --width 160 --height 90 --frames 1-2
+  raintrace compare tests/reference/default out/check/images --fail 0.1 --fail-percent 0.5)";
 
 int run_compare(const CompareArgs& args) {
   compare::CompareOptions options;

@@ -21,7 +21,9 @@ Commands, each with an example (`raintrace COMMAND --help` shows all options and
   render    simulate, export and ray-trace with POV-Ray, then movie and contact sheet
             raintrace render examples/default.toml -o out/default
   compare   image metrics and a difference report between two images or folders
-            raintrace compare tests/reference/default out/default/images
+            (here: the default example at its reference stills' size, against them)
+            raintrace render examples/default.toml -o out/check --width 160 --height 90 --frames 1-2
+            raintrace compare tests/reference/default out/check/images --fail 0.1 --fail-percent 0.5
 
 Scene files: docs/scene-format.md; examples: examples/*.toml.
 Exit codes: 0 success, 1 partly failed (frames, image differences), 2 unusable input.)";

@@ -4,6 +4,7 @@
 #include <fmt/core.h>
 #include <charconv>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "cli/scene_error.h"
@@ -79,29 +80,29 @@ CLI::Validator whole_number_in(int min, int max) {
         }
         return {};
       },
-      fmt::format("in [{}, {}]", min, max));
+      fmt::format("[{}, {}]", min, max));
 }
 
 /// A check that a number option's text is a number in `range`, described by `words`.
-CLI::Validator number_check(sim::Range range, std::string words) {
+/// A check that a number option's text is a number in `range`; `bounds` name it in --help.
+CLI::Validator number_check(sim::Range range, std::string bounds) {
   return CLI::Validator(
-      [range, words](std::string& text) -> std::string {
+      [range](std::string& text) -> std::string {
         double value = 0.0;
         const char* end = text.data() + text.size();
         const auto [stop, error] = std::from_chars(text.data(), end, value);
         if (text.empty() || error != std::errc{} || stop != end || !range.contains(value)) {
-          return fmt::format("must be a number {}, got {}", words, single_quoted(text));
+          return fmt::format("must be a number {}, got {}", range.describe(), single_quoted(text));
         }
         return {};
       },
-      words);
+      std::move(bounds));
 }
 
 CLI::Validator not_negative() { return number_check(sim::Range::at_least(0.0), ">= 0"); }
 
 CLI::Validator number_in(double min, double max) {
-  const sim::Range range = sim::Range::closed(min, max);
-  return number_check(range, range.describe());
+  return number_check(sim::Range::closed(min, max), fmt::format("[{}, {}]", min, max));
 }
 
 CLI::Validator one_of(std::initializer_list<std::string_view> choices) {

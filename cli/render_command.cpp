@@ -70,7 +70,8 @@ Examples:
   raintrace render examples/default.toml -o out/default --mask     # also images/mask_NNNN.png
   raintrace render examples/default.toml -o out/default --force    # re-render every frame
   raintrace render out/default                                     # an already exported folder
-  raintrace render examples/default.toml -o /shared/out --backend slurm --partition short --tasks 16
+  raintrace render examples/default.toml -o out/seed7 --seed 7   # other rain, same scene
+  raintrace render examples/default.toml -o out/cluster --backend slurm --tasks 4
 
 Locally, POV-Ray starts on each range of frames as soon as it is exported, while later
 frames are still simulated (Slurm exports everything first, then submits).
@@ -79,7 +80,8 @@ Ctrl-C stops the export and POV-Ray, keeps finished frames, and the next run res
 Output: OUT/images/frame_NNNN.png, OUT/animation.mp4 and .gif (needs ffmpeg),
 OUT/contact_sheet.png, OUT/manifest.json (per-frame status and seconds), OUT/logs/.
 Slurm: OUT and the raintrace binary must be on a filesystem every node mounts at the same path;
-the nodes need POV-Ray. Each array task runs `raintrace render --slurm-task OUT`.
+the nodes need POV-Ray. Each array task runs `raintrace render --slurm-task OUT`. No cluster?
+scripts/slurm-localhost.sh starts a one-node one (README: Rendering on a Slurm cluster).
 Exit codes: 0 all frames rendered, 1 some frames failed, 2 unusable input or missing POV-Ray,
 130/143 interrupted (SIGINT/SIGTERM).)";
 
