@@ -1,6 +1,7 @@
-// Frame values → POV-Ray text, appended to std::strings (number_format.h). Large sections are
-// cut into chunks that threads fill independently and join in order, so the bytes never depend
-// on the thread count.
+// Frame values → POV-Ray text: each item's line is made in a bounds-checked buffer (Line) with
+// number_format.h's writers and appended to its chunk's string. Large sections are cut into
+// chunks that threads fill independently and join in order, so the bytes never depend on the
+// thread count.
 #include "povgen/frame_text.h"
 
 #include <algorithm>
@@ -23,15 +24,56 @@ constexpr std::size_t kChunk = 16384;
 /// ~110, its two index lines ~40 each, a sphere line ~45.
 constexpr std::size_t kItemBytes = 128;
 
-void append_vec(std::string& text, const glm::vec3& v) {
-  text += '<';
-  append_number(text, v.x);
-  text += ',';
-  append_number(text, v.y);
-  text += ',';
-  append_number(text, v.z);
-  text += '>';
-}
+/// One item's line of text (a sphere, a streak's corners, a quad's index triples), made in a
+/// fixed buffer and appended to its chunk's string in one go. Every write checks the room left
+/// first (the number writers are given the buffer's end), so a line can never overrun it.
+class Line {
+ public:
+  void put(char c) {
+    require(1);
+    m_text[m_size++] = c;
+  }
+  void put(std::string_view piece) {
+    require(piece.size());
+    std::copy(piece.begin(), piece.end(), m_text.begin() + static_cast<std::ptrdiff_t>(m_size));
+    m_size += piece.size();
+  }
+  void number(double v) { m_size = end_of(write_number(cursor(), limit(), v)); }
+  void fixed5(double v) { m_size = end_of(write_fixed5(cursor(), limit(), v)); }
+  void index(std::uint64_t v) { m_size = end_of(write_index(cursor(), limit(), v)); }
+  void vec(const glm::vec3& v) {
+    put('<');
+    number(v.x);
+    put(',');
+    number(v.y);
+    put(',');
+    number(v.z);
+    put('>');
+  }
+  /// Appends the line to `text` and starts the next one.
+  void append_to(std::string& text) {
+    text.append(m_text.data(), m_size);
+    m_size = 0;
+  }
+
+ private:
+  /// The longest line: a streak's 4 corners of 3 numbers each, with their punctuation.
+  static constexpr std::size_t kCapacity = 16 * kMaxNumberChars;
+
+  void require(std::size_t chars) const {
+    if (chars > kCapacity - m_size) {
+      throw std::length_error("write_frame_text: an item's text is longer than a line");
+    }
+  }
+  char* cursor() { return m_text.data() + m_size; }
+  char* limit() { return m_text.data() + kCapacity; }
+  std::size_t end_of(const char* end) const {
+    return static_cast<std::size_t>(end - m_text.data());
+  }
+
+  std::array<char, kCapacity> m_text{};
+  std::size_t m_size = 0;
+};
 
 /// Sends text to the sink in order. Small pieces are gathered; large sections are cut into
 /// chunks that worker threads fill, each into its own reused buffer, and the buffers go to
@@ -77,24 +119,26 @@ class Emitter {
 
 void write_spheres(const std::vector<SphereValue>& spheres, std::size_t begin, std::size_t end,
                    std::string& text) {
+  Line line;
   for (std::size_t i = begin; i < end; ++i) {
     const SphereValue& s = spheres[i];
     if (s.axis_ratio == 1.0f) {
-      text += "sphere{";
-      append_vec(text, s.centre);
-      text += ',';
-      append_number(text, s.radius);
-      text += "}\n";
+      line.put("sphere{");
+      line.vec(s.centre);
+      line.put(',');
+      line.number(s.radius);
+      line.put("}\n");
     } else {
       // Flattened about its own centre: scale first, then move into place.
-      text += "sphere{0,";
-      append_number(text, s.radius);
-      text += " scale<1,";
-      append_number(text, s.axis_ratio);
-      text += ",1>translate";
-      append_vec(text, s.centre);
-      text += "}\n";
+      line.put("sphere{0,");
+      line.number(s.radius);
+      line.put(" scale<1,");
+      line.number(s.axis_ratio);
+      line.put(",1>translate");
+      line.vec(s.centre);
+      line.put("}\n");
     }
+    line.append_to(text);
   }
 }
 
@@ -112,45 +156,48 @@ void write_sphere_union(Emitter& out, const std::vector<SphereValue>& spheres,
   out.text("}\nno_shadow hollow\n}\n");
 }
 
-/// One streak's vertex line. Corners are written to 10 µm in fixed point (append_fixed5), not
+/// One streak's vertex line. Corners are written to 10 µm in fixed point (write_fixed5), not
 /// with 7 significant digits: a streak is at least a pixel wide, and a pixel is far wider than
 /// 10 µm wherever a streak is drawn.
-void write_corners(std::string& text, const std::array<glm::vec3, 4>& corners) {
+void write_corners(Line& line, const std::array<glm::vec3, 4>& corners) {
   for (const glm::vec3& c : corners) {
-    text += '<';
-    append_fixed5(text, c.x);
-    text += ',';
-    append_fixed5(text, c.y);
-    text += ',';
-    append_fixed5(text, c.z);
-    text += ">,";
+    line.put('<');
+    line.fixed5(c.x);
+    line.put(',');
+    line.fixed5(c.y);
+    line.put(',');
+    line.fixed5(c.z);
+    line.put(">,");
   }
-  text += '\n';
+  line.put('\n');
 }
 
 /// Index triples of the two triangles of each quad: <v, v+1, v+2>, <v, v+2, v+3>.
-void write_triangle_pairs(std::string& text, std::uint64_t v) {
-  text += '<';
-  append_index(text, v);
-  text += ',';
-  append_index(text, v + 1);
-  text += ',';
-  append_index(text, v + 2);
-  text += ">,<";
-  append_index(text, v);
-  text += ',';
-  append_index(text, v + 2);
-  text += ',';
-  append_index(text, v + 3);
-  text += ">,\n";
+void write_triangle_pairs(Line& line, std::uint64_t v) {
+  line.put('<');
+  line.index(v);
+  line.put(',');
+  line.index(v + 1);
+  line.put(',');
+  line.index(v + 2);
+  line.put(">,<");
+  line.index(v);
+  line.put(',');
+  line.index(v + 2);
+  line.put(',');
+  line.index(v + 3);
+  line.put(">,\n");
 }
 
 /// The uv_indices line of each atlas cell: the same few dozen bytes for every streak in that
 /// cell, so they are made once per frame and copied.
 std::vector<std::string> uv_index_lines(int cells) {
   std::vector<std::string> lines(static_cast<std::size_t>(std::max(cells, 0)));
-  for (std::size_t cell = 0; cell < lines.size(); ++cell)
-    write_triangle_pairs(lines[cell], 4 * cell);
+  Line line;
+  for (std::size_t cell = 0; cell < lines.size(); ++cell) {
+    write_triangle_pairs(line, 4 * cell);
+    line.append_to(lines[cell]);
+  }
   return lines;
 }
 
@@ -162,7 +209,11 @@ void write_streak_mesh(Emitter& out, const std::vector<StreakValue>& streaks,
   out.index(4 * n);
   out.text(",\n");
   out.chunks(n, [&](std::size_t b, std::size_t e, std::string& text) {
-    for (std::size_t i = b; i < e; ++i) write_corners(text, streaks[i].corners);
+    Line line;
+    for (std::size_t i = b; i < e; ++i) {
+      write_corners(line, streaks[i].corners);
+      line.append_to(text);
+    }
   });
   // One uv quad per atlas cell, inset by half a texel so filtering never reads a neighbour.
   // Corners 0, 1 (trailing end) take the cell's top, 2, 3 (leading end) its bottom.
@@ -193,7 +244,11 @@ void write_streak_mesh(Emitter& out, const std::vector<StreakValue>& streaks,
   out.index(2 * n);
   out.text(",\n");
   out.chunks(n, [&](std::size_t b, std::size_t e, std::string& text) {
-    for (std::size_t i = b; i < e; ++i) write_triangle_pairs(text, 4 * i);
+    Line line;
+    for (std::size_t i = b; i < e; ++i) {
+      write_triangle_pairs(line, 4 * i);
+      line.append_to(text);
+    }
   });
   const std::vector<std::string> uv_lines = uv_index_lines(cells);
   out.text("}\nuv_indices{");

@@ -29,12 +29,37 @@ TEST(NumberFormat, KnownAnswers) {
   EXPECT_EQ(format_number(1e-9 * 0.0), "0");
 }
 
+TEST(NumberFormat, AgreesWithToCharsSevenDigits) {
+  // Away from exact ties, the text is std::to_chars(general, 7)'s (%.7g), in and out of the
+  // fixed range.
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> exponent(-6.0, 10.0);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int i = 0; i < 200000; ++i) {
+    const double v = (unit(rng) < 0.5 ? -1.0 : 1.0) * std::pow(10.0, exponent(rng));
+    char expected[64];
+    const auto r = std::to_chars(expected, expected + 64, v, std::chars_format::general, 7);
+    ASSERT_EQ(format_number(v), std::string(expected, r.ptr)) << "value " << v;
+  }
+}
+
 TEST(NumberFormat, RoundingCarriesIntoANewDigit) {
-  // Just below a power of ten, rounding to 7 digits carries: 9.9999999 → 10, 9999999.6 → 1e+07.
-  EXPECT_EQ(format_number(0.099999996), "0.1");
+  // Just below a power of ten, rounding to 7 digits carries into a new digit.
+  EXPECT_EQ(format_number(0.0099999996), "0.01");
+  EXPECT_EQ(format_number(9.9999999), "10");
   EXPECT_EQ(format_number(999999.96), "1000000");
-  EXPECT_EQ(format_number(9999999.6), "1e+07");
+  // At the top of the fixed range the carry gives 8 digits where %.7g says "1e+07": the text
+  // written since the first reference stills, kept.
+  EXPECT_EQ(format_number(9999999.6), "10000000");
   EXPECT_EQ(format_number(0.00012345678), "0.0001234568");
+}
+
+TEST(NumberFormat, ExactTiesRoundAwayFromZero) {
+  // 0.12890625 is exactly representable and halfway at the 7th digit: the atlas uv
+  // coordinates are such values. std::to_chars would round to even ("0.1289062").
+  EXPECT_EQ(format_number(0.12890625), "0.1289063");
+  EXPECT_EQ(format_number(-0.12890625), "-0.1289063");
+  EXPECT_EQ(format_number(1.5), "1.5");
 }
 
 TEST(NumberFormat, RoundTripsWithinHalfAUnitOfTheSeventhDigit) {
