@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -159,7 +160,7 @@ void World::handle_events(double t_end_s) {
       if (counting) {
         ++m_ground_hits;
         if (m_region.in_measure_area(glm::dvec3(hit))) {
-          m_ground_water_m3 += diameter * diameter * diameter * (3.14159265358979323846 / 6.0);
+          m_ground_water_m3 += diameter * diameter * diameter * (std::numbers::pi / 6.0);
         }
       }
       if (m_params.splashes.enabled && m_params.splashes.droplets > 0 &&
