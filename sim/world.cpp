@@ -6,6 +6,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -73,6 +74,22 @@ World::World(const SimParams& params)
   while (m_step < m_prewarm_steps) step();
 }
 
+std::optional<NewDrop> World::new_drop(std::uint64_t id, double across, double along, double y,
+                                       double diameter, double terminal_speed,
+                                       const glm::dvec3& wind) const {
+  const double a = m_region.a0() + across * (m_region.a1() - m_region.a0());
+  const double b = m_region.b0() + along * (m_region.b1() - m_region.b0());
+  if (!m_region.reaches_footprint(a, b, y, terminal_speed)) return std::nullopt;
+  NewDrop drop;
+  drop.id = id;
+  drop.position = glm::vec3(m_region.point(a, b, y));
+  drop.velocity = glm::vec3(wind.x, -terminal_speed, wind.z);
+  drop.diameter = static_cast<float>(diameter);
+  drop.vanishing_rate = static_cast<float>(m_params.rain.vanishing_rate_per_s);
+  drop.colour = glm::vec3(m_params.rain.colour);
+  return drop;
+}
+
 int World::thread_count() const {
   if (m_params.threads > 0) return m_params.threads;
   return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -94,21 +111,13 @@ void World::fill() {
     const double d = m_sizes.sample_in_air(u(0));
     const double vt = terminal_velocity(d);
     const double y = m_region.ground() + u(3) * (m_region.ceiling() - m_region.ground());
-    const double a = m_region.a0() + u(1) * (m_region.a1() - m_region.a0());
-    const double b = m_region.b0() + u(2) * (m_region.b1() - m_region.b0());
-    // Drawn (so ids and the rest of the fill do not depend on it), but not simulated.
-    if (!m_region.reaches_footprint(a, b, y, vt)) continue;
-    NewDrop drop;
-    drop.id = id;
-    drop.position = glm::vec3(m_region.point(a, b, y));
-    drop.velocity = glm::vec3(wind.x, -vt, wind.z);
-    drop.diameter = static_cast<float>(d);
+    // Drawn (so ids and the rest of the fill do not depend on it), but maybe not simulated.
+    std::optional<NewDrop> drop = new_drop(id, u(1), u(2), y, d, vt, wind);
+    if (!drop) continue;
     // As if it had fallen from the ceiling at terminal velocity.
-    drop.age = static_cast<float>((m_region.ceiling() - y) / vt);
-    drop.vanishing_rate = rate;
-    drop.opacity = std::exp(-rate * drop.age);
-    drop.colour = glm::vec3(m_params.rain.colour);
-    m_state.push(drop);
+    drop->age = static_cast<float>((m_region.ceiling() - y) / vt);
+    drop->opacity = std::exp(-rate * drop->age);
+    m_state.push(*drop);
   }
 }
 
@@ -127,17 +136,9 @@ void World::spawn(double t_s) {
     const double vt = terminal_velocity(d);
     // Born somewhere within this substep's fall below the ceiling, so that no layers form.
     const double y = m_region.ceiling() - u(3) * vt * dt;
-    const double a = m_region.a0() + u(1) * (m_region.a1() - m_region.a0());
-    const double b = m_region.b0() + u(2) * (m_region.b1() - m_region.b0());
-    if (!m_region.reaches_footprint(a, b, y, vt)) continue;
-    NewDrop drop;
-    drop.id = id;
-    drop.position = glm::vec3(m_region.point(a, b, y));
-    drop.velocity = glm::vec3(wind.x, -vt, wind.z);
-    drop.diameter = static_cast<float>(d);
-    drop.vanishing_rate = static_cast<float>(m_params.rain.vanishing_rate_per_s);
-    drop.colour = glm::vec3(m_params.rain.colour);
-    m_state.push(drop);
+    std::optional<NewDrop> drop = new_drop(id, u(1), u(2), y, d, vt, wind);
+    if (!drop) continue;
+    m_state.push(*drop);
     if (d > breakup_m) {
       m_breakups += break_up(m_state, m_state.size() - 1, breakup_m, m_next_id, m_params.seed) > 0;
     }
