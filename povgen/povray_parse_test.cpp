@@ -16,6 +16,7 @@
 #include "povgen/frame_values.h"
 #include "povgen/output_folder.h"
 #include "povgen/test_support/synthetic_rain.h"
+#include "tests/support/pixels.h"
 
 namespace raintrace::povgen {
 namespace {
@@ -39,15 +40,7 @@ std::string log_of(const fs::path& dir) {
   return read_file_bytes(dir / "povray.log").substr(0, 4000);
 }
 
-/// Decoded RGB pixels in 0..1 (PNG bytes differ between identical renders: compare pixels).
-std::vector<float> read_rgb(const fs::path& path) {
-  auto in = OIIO::ImageInput::open(path.string());
-  if (!in) return {};
-  const OIIO::ImageSpec& spec = in->spec();
-  std::vector<float> px(static_cast<std::size_t>(spec.width) * spec.height * 3);
-  in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, px.data());
-  return px;
-}
+using raintrace::test_support::read_rgb;
 
 double mean_abs_difference(const std::vector<float>& a, const std::vector<float>& b) {
   double sum = 0.0;

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/command.h"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -22,12 +24,7 @@ namespace fs = std::filesystem;
 const fs::path kSourceDir = RAINTRACE_SOURCE_DIR;
 const fs::path kCases = kSourceDir / "tests" / "cli_output";
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using raintrace::test_support::read_text;
 
 /// The command lines of commands.txt (blank lines and # comments left out).
 std::vector<std::string> commands() {

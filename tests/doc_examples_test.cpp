@@ -23,6 +23,8 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/command.h"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -36,12 +38,8 @@ struct Example {
   bool slurm = false;  ///< needs a Slurm cluster
 };
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using raintrace::test_support::read_text;
+using raintrace::test_support::run_command;
 
 std::string trimmed(const std::string& line) {
   const std::size_t first = line.find_first_not_of(' ');
@@ -77,19 +75,11 @@ std::vector<Example> readme_examples() {
   return examples;
 }
 
-std::string output_of(const std::string& command) {
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), &pclose);
-  std::string out;
-  char buffer[4096];
-  while (pipe && std::fgets(buffer, sizeof buffer, pipe.get()) != nullptr) out += buffer;
-  return out;
-}
-
 /// The example lines of `raintrace [command] --help`, in order.
 std::vector<Example> help_examples(const std::string& command) {
   const std::string where = "raintrace " + (command.empty() ? "" : command + " ") + "--help";
   std::vector<Example> examples;
-  std::istringstream in(output_of("'" + kBinary.string() + "' " + command + " --help"));
+  std::istringstream in(run_command("'" + kBinary.string() + "' " + command + " --help").output);
   for (std::string line; std::getline(in, line);) {
     std::string text = trimmed(line);
     if (text.rfind("Example: ", 0) == 0) text = text.substr(9);

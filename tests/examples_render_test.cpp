@@ -14,6 +14,7 @@
 
 #include "cli/export_pipeline.h"
 #include "cli/scene.h"
+#include "tests/support/pixels.h"
 
 namespace raintrace {
 namespace {
@@ -31,14 +32,7 @@ std::vector<fs::path> examples() {
   return files;
 }
 
-std::vector<float> read_rgb(const fs::path& path) {
-  auto in = OIIO::ImageInput::open(path.string());
-  if (!in) return {};
-  const OIIO::ImageSpec& spec = in->spec();
-  std::vector<float> px(static_cast<std::size_t>(spec.width) * spec.height * 3);
-  in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, px.data());
-  return px;
-}
+using raintrace::test_support::read_rgb;
 
 /// Exports frame 1 of the scene at 64×36 into dir and renders it; returns the pixels.
 std::vector<float> export_and_render(cli::Scene scene, const fs::path& dir) {
