@@ -26,7 +26,8 @@ Commands, each with an example (`raintrace COMMAND --help` shows all options and
             raintrace compare tests/reference/default out/check/images --fail 0.1 --fail-percent 0.5
 
 Scene files: docs/scene-format.md; examples: examples/*.toml.
-Exit codes: 0 success, 1 partly failed (frames, image differences), 2 unusable input.)";
+Exit codes: 0 success, 1 partly failed (frames, image differences), 2 unusable input,
+3 system error (disk full, permission denied), 4 output folder in use by another run.)";
 
 }  // namespace
 
@@ -58,8 +59,8 @@ int main(int argc, char** argv) {
     }
   } catch (const std::exception& e) {
     std::fflush(stdout);
-    fmt::print(stderr, "raintrace: error: {}\n", e.what());
-    return cli::exit_code::error;
+    fmt::print(stderr, "raintrace: error: {}\n", cli::error_line(e));
+    return cli::exit_code_for(e);
   }
   return cli::exit_code::error;
 }

@@ -12,8 +12,11 @@
 #include <string>
 #include <vector>
 
-#include "cli/export_pipeline.h"
+#include "cli/folder_run.h"
 #include "cli/scene.h"
+#include "output/budget.h"
+#include "output/export.h"
+#include "output/folder_state.h"
 #include "tests/support/pixels.h"
 
 namespace raintrace {
@@ -43,7 +46,12 @@ std::vector<float> export_and_render(cli::Scene scene, const fs::path& dir) {
   scene.sim.prewarm_s = 0.0;
   scene.sim.substep_s = 0.01;
   fs::remove_all(dir);
-  cli::export_scene(scene, cli::FrameRange{1, 1}, dir);
+  {
+    const output::SceneToExport e = cli::scene_to_export(scene);
+    auto folder =
+        output::FolderState::claim(dir, output::identity_of(scene.text, e), false, "test");
+    output::export_frames(folder, e, {1, 1});
+  }
   const std::string command =
       "cd '" + dir.string() + "' && povray scene.ini +SF1 +EF1 -D -V >povray.log 2>&1";
   EXPECT_EQ(std::system(command.c_str()), 0) << "povray failed in " << dir;
@@ -65,6 +73,13 @@ std::vector<std::string> render_scene_ini(const fs::path& dir) {
   return names;
 }
 
+/// Exports frames first..last of the scene into dir, as `raintrace export --frames` does.
+void export_range(const cli::Scene& scene, const fs::path& dir, int first, int last) {
+  const output::SceneToExport e = cli::scene_to_export(scene);
+  auto folder = output::FolderState::claim(dir, output::identity_of(scene.text, e), false, "test");
+  output::export_frames(folder, e, {first, last});
+}
+
 TEST(PartialExport, SceneIniRendersExactlyTheExportedFrames) {
   if (!have_povray()) GTEST_SKIP() << "povray is not installed";
   cli::Scene scene = cli::load_scene_file(fs::path{RAINTRACE_SOURCE_DIR} / "examples/default.toml");
@@ -75,19 +90,29 @@ TEST(PartialExport, SceneIniRendersExactlyTheExportedFrames) {
   const fs::path dir = fs::path{::testing::TempDir()} / "raintrace_partial_export";
   fs::remove_all(dir);
   // Once `povray scene.ini` of a folder exported with --frames 1-2 failed at frame 3.
-  cli::export_scene(scene, cli::FrameRange{2, 3}, dir);
+  export_range(scene, dir, 2, 3);
   EXPECT_EQ(render_scene_ini(dir), (std::vector<std::string>{"frame_0002.png", "frame_0003.png"}));
   // A later export that joins the earlier frames renders them all…
-  cli::export_scene(scene, cli::FrameRange{4, 4}, dir);
+  export_range(scene, dir, 4, 4);
   EXPECT_EQ(render_scene_ini(dir),
             (std::vector<std::string>{"frame_0002.png", "frame_0003.png", "frame_0004.png"}));
   // …and one that leaves a gap renders its own frames only.
-  cli::export_scene(scene, cli::FrameRange{7, 7}, dir);
+  export_range(scene, dir, 7, 7);
   EXPECT_EQ(render_scene_ini(dir), (std::vector<std::string>{"frame_0007.png"}));
   fs::remove_all(dir);
 }
 
 class ExampleRender : public ::testing::TestWithParam<fs::path> {};
+
+TEST_P(ExampleRender, FitsTheDefaultMemoryAndWorkLimitsWithRoomToSpare) {
+  // The limits (output/budget.h) stop runaway scenes; no example may come near them, rendered
+  // whole with the default 4 POV-Ray processes.
+  const cli::Scene scene = cli::load_scene_file(GetParam());
+  const auto e = cli::scene_to_export(scene);
+  const output::Budget b = output::estimate_budget(e, {1, scene.frames}, 4);
+  EXPECT_LT(b.total_bytes(), output::default_max_memory_bytes() / 4) << GetParam();
+  EXPECT_LT(b.drop_steps, output::BudgetLimits{}.max_drop_steps / 100) << GetParam();
+}
 
 TEST_P(ExampleRender, RendersRainThatChangesThePicture) {
   if (!have_povray()) GTEST_SKIP() << "povray is not installed: example renders skipped";
