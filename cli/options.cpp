@@ -3,6 +3,7 @@
 
 #include <fmt/core.h>
 #include <charconv>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -100,6 +101,11 @@ CLI::Validator number_check(sim::Range range, std::string bounds) {
 }
 
 CLI::Validator not_negative() { return number_check(sim::Range::at_least(0.0), ">= 0"); }
+
+CLI::Validator positive_number() {
+  const sim::Range positive{0.0, std::numeric_limits<double>::infinity(), true, false};
+  return number_check(positive, "> 0");
+}
 
 CLI::Validator number_in(double min, double max) {
   return number_check(sim::Range::closed(min, max), fmt::format("[{}, {}]", min, max));

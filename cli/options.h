@@ -27,6 +27,9 @@ CLI::Validator whole_number_in(int min, int max);
 /// A check that a number option is >= 0: "must be a number >= 0, got '-1'".
 CLI::Validator not_negative();
 
+/// A check that a number option is > 0: "must be a number > 0, got '-1'".
+CLI::Validator positive_number();
+
 /// A check that a number option lies in [min, max]: "must be a number in [0, 100], got '150'".
 CLI::Validator number_in(double min, double max);
 
