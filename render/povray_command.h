@@ -26,9 +26,9 @@ std::string temp_dir_name();
 /// argv for `povray` rendering `span` of the folder's animation. Runs with the output folder as
 /// working directory (relative includes resolve there, +L. adds it to the library path):
 ///   povray scene.ini -D +FN -V -GR +L. +Oimages/.tmp/frame_.png +KFI1 +KFF9999 +SFa +EFb
-/// -D: headless; -V -GR: quiet but keeps POV-Ray's "File '…' line N:" error lines (docs/povray-notes.md);
-/// +KFI1 +KFF9999 (as many nines as `digits`) keep frame_number and the zero-padded names
-/// identical to the ini's whole animation.
+/// -D: headless; -V -GR: quiet but keeps POV-Ray's "File '…' line N:" error lines
+/// (docs/povray-notes.md); +KFI1 +KFF9999 (as many nines as `digits`) keep frame_number and the
+/// zero-padded names identical to the ini's whole animation.
 std::vector<std::string> povray_argv(Pass pass, const FrameSpan& span, int digits = 4);
 
 /// Where POV-Ray writes the environment plate first ("images/.tmp/environment_plate.png").
