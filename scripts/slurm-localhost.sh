@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # A one-node Slurm cluster on this machine, for trying `raintrace render --backend slurm` and for
-# the Slurm tests (render/slurm_render_test.cpp). Everything it makes lives in DIR: the
-# configuration, a munge key and socket of its own, state, logs and the daemons' PIDs. It
-# touches neither /etc/slurm nor the system's munge, and it picks free ports, so it runs beside
-# another cluster on the same machine.
+# the Slurm tests (render/slurm_render_test.cpp). What it makes lives in DIR: the
+# configuration, state, logs and the daemons' PIDs; its munge key and the sockets go into a
+# short folder of their own (Unix socket paths have a length limit), named in DIR/sockets and
+# removed by `stop`. It touches neither /etc/slurm nor the system's munge, and it picks free
+# ports, so it runs beside another cluster on the same machine.
 #
 #   scripts/slurm-localhost.sh start DIR   start munged, slurmctld and slurmd; wait until the
 #                                          node is idle; print the SLURM_CONF line to use
@@ -35,6 +36,8 @@ stop_daemons() {
     for _ in $(seq 100); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
   done
   rm -f "$dir/pids"
+  # The sockets' folder (see below).
+  if [[ -f $dir/sockets ]]; then rm -rf "$(cat "$dir/sockets")"; rm -f "$dir/sockets"; fi
 }
 
 case $action in
@@ -73,9 +76,15 @@ done
 : >"$dir/pids"
 trap 'echo "slurm-localhost: start failed; logs in $dir" >&2; stop_daemons' ERR
 
+# Unix sockets (munge's, slurmd's per job step) cannot have paths longer than 107 bytes: they
+# live in a short folder of their own, whatever DIR is; DIR/sockets names it for `stop`.
+sockets=$(mktemp -d -t rt-slurm.XXXXXX)
+chmod 0755 "$sockets"
+echo "$sockets" >"$dir/sockets"
+
 # munge: its own key and socket. munged refuses a key that others could write or read and a
 # socket folder that not everyone may enter (slurm and submitting users talk to the socket).
-munge_dir=$dir/munge
+munge_dir=$sockets/munge
 install -d -o munge -g munge -m 0755 "$munge_dir"
 [[ -s $munge_dir/munge.key ]] || mungekey --create --keyfile="$munge_dir/munge.key"
 chown munge:munge "$munge_dir/munge.key"
@@ -91,7 +100,7 @@ munge --socket="$socket" -n | unmunge --socket="$socket" >/dev/null
 
 # Slurm: state and logs in DIR, owned by the slurm user that slurmctld runs as.
 install -d -o slurm -g slurm -m 0755 "$dir/state" "$dir/log"
-install -d -m 0755 "$dir/spool"
+install -d -m 0755 "$sockets/spool"
 ctld_port=$(free_port)
 slurmd_port=$(free_port "$ctld_port")
 memory_mb=$(awk '/MemTotal/ { print int($2 / 1024 * 0.9) }' /proc/meminfo)
@@ -114,9 +123,9 @@ JobAcctGatherType=jobacct_gather/none
 AccountingStorageType=accounting_storage/none
 ReturnToService=2
 StateSaveLocation=$dir/state
-SlurmdSpoolDir=$dir/spool
+SlurmdSpoolDir=$sockets/spool
 SlurmctldPidFile=$dir/state/slurmctld.pid
-SlurmdPidFile=$dir/spool/slurmd.pid
+SlurmdPidFile=$sockets/spool/slurmd.pid
 SlurmctldLogFile=$dir/log/slurmctld.log
 SlurmdLogFile=$dir/log/slurmd.log
 NodeName=localhost NodeAddr=127.0.0.1 CPUs=$(nproc) RealMemory=$memory_mb State=UNKNOWN

@@ -129,7 +129,10 @@ class DocExamples : public ::testing::Test {
     if (std::system("command -v povray >/dev/null 2>&1") != 0) {
       GTEST_SKIP() << "POV-Ray is not installed: the render examples cannot run";
     }
-    m_work = fs::path{::testing::TempDir()} / "raintrace_doc_examples";
+    // One folder per test: ctest runs them as separate processes at the same time.
+    m_work = fs::path{::testing::TempDir()} /
+             (std::string{"raintrace_doc_examples_"} +
+              ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(m_work);
     fs::create_directories(m_work / "examples");
     fs::create_directories(m_work / "tests");
@@ -188,7 +191,23 @@ TEST_F(DocExamples, FindsTheExamplesOfEveryHelpTextAndOfReadme) {
   }
 }
 
-class SlurmDocExamples : public DocExamples {};
+class SlurmDocExamples : public DocExamples {
+ protected:
+  void SetUp() override {
+    // A run that was killed (a ctest timeout) leaves its clusters running: stop them first.
+    const fs::path old = fs::path{::testing::TempDir()} /
+                         (std::string{"raintrace_doc_examples_"} +
+                          ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    if (fs::exists(old)) {
+      for (const auto& entry : fs::directory_iterator(old)) {
+        if (entry.path().filename().string().rfind("cluster_", 0) != 0) continue;
+        run_command("'" + (kSourceDir / "scripts" / "slurm-localhost.sh").string() + "' stop '" +
+                    entry.path().string() + "'");
+      }
+    }
+    DocExamples::SetUp();
+  }
+};
 
 TEST_F(SlurmDocExamples, EverySlurmExampleRunsAsWrittenOnAOneNodeCluster) {
   if (::geteuid() != 0 || std::system("command -v sbatch >/dev/null 2>&1") != 0) {
