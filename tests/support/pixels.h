@@ -9,7 +9,8 @@
 
 namespace raintrace::test_support {
 
-/// The image's RGB values in 0..1, row by row; empty when it cannot be read.
+/// The image's RGB values, row by row: 0..1 for PNG, scene-linear for EXR; empty when it cannot
+/// be read.
 inline std::vector<float> read_rgb(const std::filesystem::path& path) {
   auto in = OIIO::ImageInput::open(path.string());
   if (!in) return {};
