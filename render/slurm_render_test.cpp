@@ -42,11 +42,11 @@ TEST(ShareFrames, SplitsIntoNearlyEqualContiguousShares) {
 }
 
 TEST(SbatchScript, IsAnArrayRunningTheWorkerInTheOutputFolder) {
-  const auto script = sbatch_script("/shared/out", "/opt/raintrace", 6);
+  const auto script = sbatch_script("/cluster/out", "/opt/raintrace", 6);
   EXPECT_NE(script.find("#SBATCH --array=0-5\n"), std::string::npos);
-  EXPECT_NE(script.find("#SBATCH --chdir=/shared/out\n"), std::string::npos);
-  EXPECT_NE(script.find("#SBATCH --output=/shared/out/logs/slurm_%A_%a.out\n"), std::string::npos);
-  EXPECT_NE(script.find("exec '/opt/raintrace' render --slurm-task '/shared/out'\n"),
+  EXPECT_NE(script.find("#SBATCH --chdir=/cluster/out\n"), std::string::npos);
+  EXPECT_NE(script.find("#SBATCH --output=/cluster/out/logs/slurm_%A_%a.out\n"), std::string::npos);
+  EXPECT_NE(script.find("exec '/opt/raintrace' render --slurm-task '/cluster/out'\n"),
             std::string::npos);
 }
 
