@@ -282,7 +282,8 @@ void write_streak_mesh(Emitter& out, const std::vector<StreakValue>& streaks,
   out.text(",\n");
   out.chunks(n, [&](std::size_t b, std::size_t e, std::string& text) {
     for (std::size_t i = b; i < e; ++i) {
-      text += uv_lines[static_cast<std::size_t>(used.slot[static_cast<std::size_t>(streaks[i].cell)])];
+      text +=
+          uv_lines[static_cast<std::size_t>(used.slot[static_cast<std::size_t>(streaks[i].cell)])];
     }
   });
   out.text("}\ntexture{RT_StreakTexture}\nno_shadow hollow\n}\n");
