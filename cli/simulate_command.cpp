@@ -1,7 +1,9 @@
-// `raintrace simulate SCENE.toml [--frames A-B] [--seed N] [--stats FILE.json] [--threads N]`:
-// runs the simulation alone (no POV-Ray), feeds every frame of the range to sim's
-// StatisticsCollector, prints a one-line summary and optionally writes the statistics as JSON.
-// Useful to check a scene's drop count and rain rate before paying for a render.
+// `raintrace simulate SCENE.toml [--frames A-B] [--seed N] [--stats FILE.json] [--threads N]
+// [--max-memory SIZE] [--max-drop-steps N]`: runs the simulation alone (no POV-Ray), feeds every
+// frame of the range to sim's StatisticsCollector, prints a one-line summary and optionally
+// writes the statistics as JSON. Useful to check a scene's drop count and rain rate before
+// paying for a render. A scene past the work or memory limits stops before it starts, as in
+// export and render.
 #include <fmt/core.h>
 #include <unistd.h>
 #include <CLI/CLI.hpp>
@@ -18,6 +20,7 @@
 
 #include "cli/command.h"
 #include "cli/exit_codes.h"
+#include "cli/folder_run.h"
 #include "cli/options.h"
 #include "cli/scene.h"
 #include "cli/scene_error.h"
@@ -33,6 +36,7 @@ struct SimulateArgs {
   std::optional<std::uint64_t> seed;  ///< none: the scene file's seed
   std::string stats;
   int threads = 0;
+  LimitArgs limits;
 };
 
 constexpr const char* kFooter = R"(
@@ -53,7 +57,9 @@ samples}], horizontal_velocity_m_per_s [x, z], horizontal_motion_by_frame
 [{time_s, drop_velocity_m_per_s [x, z], drop_velocity_sd_m_per_s [x, z],
 wind_m_per_s [x, z]}], splashes,
 lightning {strikes, segments}, plus scene, seed, frame_range, time_s, raintrace_version.
-Exit codes: 0 done, 2 bad scene file or option.)";
+A scene asking for more memory or simulation than --max-memory/--max-drop-steps allow
+stops before it starts, naming the scene keys to change.
+Exit codes: 0 done, 2 bad scene file, option, or a scene past those limits.)";
 
 /// Progress on stderr: a self-updating line on a terminal, a plain line every few seconds
 /// otherwise (logs, CI), nothing for runs shorter than that.
@@ -161,6 +167,7 @@ int run_simulate(const SimulateArgs& args) {
   if (args.seed) scene.sim.seed = *args.seed;
   scene.sim.threads = args.threads;
   const FrameRange range = parse_frame_range(args.frames, scene.frames);
+  check_run_budget(scene_to_export(scene), {range.first, range.last}, 0, args.limits);
 
   sim::World world(scene.sim);
   sim::StatisticsCollector collector(scene.sim);
@@ -208,6 +215,7 @@ Command register_simulate_command(CLI::App& app) {
   sub->add_option("--stats", args->stats, "Write statistics as JSON to this file ('-': stdout)");
   sub->add_option("--threads", args->threads, "Worker threads, 0 = all cores (same results)")
       ->check(whole_number_in(0, 1024));
+  add_limit_options(*sub, args->limits);
   return {sub, [args] { return run_simulate(*args); }};
 }
 
