@@ -13,7 +13,8 @@ namespace raintrace::povgen {
 inline constexpr const char* kEnvironmentInclude = "environment.inc";
 inline constexpr const char* kMaterialsInclude = "raintrace_materials.inc";
 inline constexpr const char* kStreakAtlas = "textures/streak_atlas.png";
-inline constexpr const char* kEnvironmentPlate = "textures/environment_plate.png";
+/// Scene-linear HDR like the frames: lamps far above 1 and the dark end pass through unchanged.
+inline constexpr const char* kEnvironmentPlate = "textures/environment_plate.exr";
 inline constexpr const char* kSceneInclude = "scene.inc";
 inline constexpr const char* kPlateIni = "plate.ini";
 inline constexpr const char* kPlatePov = "plate.pov";
@@ -32,7 +33,7 @@ bool environment_plate_applies(const ExportParams& look);
 /// plate.pov: the environment alone (scene.inc with RT_NoPlate=1, no rain).
 std::string plate_pov_text();
 
-/// plate.ini: renders plate.pov into textures/environment_plate.png at the frames' size.
+/// plate.ini: renders plate.pov into textures/environment_plate.exr at the frames' size.
 std::string plate_ini_text(const ExportParams& look);
 
 /// scene.pov: includes frames/<prefix>_NNNN.pov for POV-Ray's frame_number (prefix "frame"
@@ -46,8 +47,10 @@ struct FrameSubset {
 };
 
 /// scene.ini (prefix "frame", dispatcher "scene.pov") or mask.ini ("mask", "mask.pov"):
-/// renders frames `frames` of a frame_count-frame animation into images/<prefix>_NNNN.png from
-/// inside the folder. Throws std::invalid_argument unless 1 <= first <= last <= frame_count.
+/// renders frames `frames` of a frame_count-frame animation from inside the folder into
+/// images/frame_NNNN.exr (half-float OpenEXR, scene-linear: raintrace develops each into
+/// images/frame_NNNN.png) or images/mask_NNNN.png. Throws std::invalid_argument unless
+/// 1 <= first <= last <= frame_count.
 std::string ini_text(const ExportParams& look, int frame_count, const char* prefix,
                      const char* dispatcher, FrameSubset frames);
 
