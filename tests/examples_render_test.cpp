@@ -63,7 +63,7 @@ std::vector<float> export_and_render(cli::Scene scene, const fs::path& dir) {
   return read_rgb(dir / "images" / "frame_0001.png");
 }
 
-/// The images povray scene.ini renders in `dir`, by file name.
+/// The images (scene-linear EXRs) povray scene.ini renders in `dir`, by file name.
 std::vector<std::string> render_scene_ini(const fs::path& dir) {
   fs::remove_all(dir / "images");
   fs::create_directories(dir / "images");
@@ -96,14 +96,14 @@ TEST(PartialExport, SceneIniRendersExactlyTheExportedFrames) {
   fs::remove_all(dir);
   // Once `povray scene.ini` of a folder exported with --frames 1-2 failed at frame 3.
   export_range(scene, dir, 2, 3);
-  EXPECT_EQ(render_scene_ini(dir), (std::vector<std::string>{"frame_0002.png", "frame_0003.png"}));
+  EXPECT_EQ(render_scene_ini(dir), (std::vector<std::string>{"frame_0002.exr", "frame_0003.exr"}));
   // A later export that joins the earlier frames renders them all…
   export_range(scene, dir, 4, 4);
   EXPECT_EQ(render_scene_ini(dir),
-            (std::vector<std::string>{"frame_0002.png", "frame_0003.png", "frame_0004.png"}));
+            (std::vector<std::string>{"frame_0002.exr", "frame_0003.exr", "frame_0004.exr"}));
   // …and one that leaves a gap renders its own frames only.
   export_range(scene, dir, 7, 7);
-  EXPECT_EQ(render_scene_ini(dir), (std::vector<std::string>{"frame_0007.png"}));
+  EXPECT_EQ(render_scene_ini(dir), (std::vector<std::string>{"frame_0007.exr"}));
   fs::remove_all(dir);
 }
 
