@@ -13,7 +13,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 exe=${1:-$root/build/cli/raintrace}
 quick=${2:-}
 [[ -x $exe ]] || { echo "render_throughput: no raintrace at $exe (build first)" >&2; exit 2; }
-work=$(mktemp -d /tmp/raintrace_render_bench.XXXXXX)
+work=$(mktemp -d -t raintrace_render_bench.XXXXXX)
 trap 'rm -rf "$work"' EXIT
 
 frames=48; counts=(2000 5000 10000 15000); hd_frames=24; final_frames=6

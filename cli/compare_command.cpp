@@ -13,6 +13,7 @@
 
 #include "cli/command.h"
 #include "cli/exit_codes.h"
+#include "cli/options.h"
 #include "compare/compare_run.h"
 #include "compare/report_html.h"
 #include "compare/report_json.h"
@@ -57,10 +58,10 @@ developed?": within half a step of rounding); otherwise with the curve alone (--
 stored instead: thresholds are then in linear units (--fail-relative suits them), and PSNR and
 SSIM, which assume a peak of 1, are not computed ("-"; null in --json).
 Exit codes: 0 all pass or warn, 1 any fail or missing frame, 2 unusable input.
-Examples:
-  raintrace compare tests/reference/default out/default/images --fail 0.02 --fail-percent 1
-  raintrace compare old/images new/images --hdr --exposure-ev -1   # the EXRs, developed
-  raintrace compare a.exr b.exr --linear --fail 0 --fail-relative 0.01)";
+Example: the default example rendered at the size and frames of its reference stills, compared
+with them by the thresholds tests/reference/thresholds.json gives it:
+  raintrace render examples/default.toml -o out/check --width 160 --height 90 --frames 1-2
+  raintrace compare tests/reference/default out/check/images --fail 0.1 --fail-percent 0.5)";
 
 int run_compare(const CompareArgs& args) {
   compare::CompareOptions options;
@@ -97,38 +98,38 @@ Command register_compare_command(CLI::App& app) {
   sub->add_option("B", args->b, "Candidate image or folder")->required();
   auto& t = args->thresholds;
   sub->add_option("--fail", t.fail, "Per-channel absolute failure threshold (default 1e-6)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(not_negative());
   sub->add_option("--warn", t.warn, "Per-channel absolute warning threshold (default 1e-6)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(not_negative());
   sub->add_option("--fail-percent", t.fail_percent,
                   "Percentage of pixels allowed to fail (default 0)")
-      ->check(CLI::Range(0.0, 100.0));
+      ->check(number_in(0.0, 100.0));
   sub->add_option("--warn-percent", t.warn_percent,
                   "Percentage of pixels allowed to warn (default 0)")
-      ->check(CLI::Range(0.0, 100.0));
+      ->check(number_in(0.0, 100.0));
   sub->add_option("--fail-relative", t.fail_relative,
                   "Also require |A-B| > this * (|A|+|B|)/2 to fail (default 0: off)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(not_negative());
   sub->add_option("--warn-relative", t.warn_relative,
                   "Also require |A-B| > this * (|A|+|B|)/2 to warn (default 0: off)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(not_negative());
   sub->add_option("--hard-fail", t.hard_fail, "Fail if any one error exceeds this (default inf)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(not_negative());
   sub->add_option("--hard-warn", t.hard_warn, "Warn if any one error exceeds this (default inf)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(not_negative());
   sub->add_option("--json", args->json, "Write every number as JSON to FILE");
   sub->add_option("--html", args->html,
                   "Write an HTML report to FILE (images in <FILE stem>_files/ beside it)");
   sub->add_option("--diff", args->diff, "Write a heat-map difference PNG per frame into DIR");
   sub->add_option("--threads", args->threads, "Frames compared at once (default 2)")
-      ->check(CLI::Range(1, 256));
+      ->check(whole_number_in(1, 256));
   sub->add_flag("--hdr", args->hdr,
                 "Folders: compare a frame's EXR, not its PNG, where a folder holds both");
   sub->add_flag("--linear", args->linear,
                 "Compare HDR values as stored (scene-linear) instead of developing them");
   sub->add_option("--exposure-ev", args->exposure_ev,
                   "Exposure HDR input is developed with, in stops (default 0)")
-      ->check(CLI::Range(-16.0, 16.0));
+      ->check(number_in(-16.0, 16.0));
   const std::vector<std::string> views(std::begin(film::kViewNames), std::end(film::kViewNames));
   const std::vector<std::string> looks(std::begin(film::kLookNames), std::end(film::kLookNames));
   sub->add_option("--view", args->view, "View HDR input is developed with (default filmic)")

@@ -13,6 +13,7 @@
 #include "cli/command.h"
 #include "cli/exit_codes.h"
 #include "cli/folder_run.h"
+#include "cli/options.h"
 #include "cli/scene.h"
 #include "cli/stop_signals.h"
 #include "output/export.h"
@@ -90,7 +91,7 @@ Command register_export_command(CLI::App& app) {
   sub->add_option("scene", args->scene, "Scene file (.toml)")->required();
   sub->add_option("-o,--output", args->out, "Output folder (created if missing)")->required();
   sub->add_option("--frames", args->frames, "Frames to write: A-B or N (default: all)");
-  sub->add_option("--seed", args->seed, "Seed for every random stream (overrides the scene)");
+  add_seed_option(*sub, args->seed);
   sub->add_flag("--force", args->force,
                 "Replace a folder made from another scene or with other settings (its frames "
                 "and images are deleted), or write into a non-empty folder raintrace did not make");

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "cli/options.h"
 #include "render/process.h"
 
 namespace raintrace::cli {
@@ -39,7 +40,7 @@ void add_limit_options(CLI::App& command, LimitArgs& limits) {
       .add_option("--max-drop-steps", limits.max_drop_steps,
                   "Most simulation work, drops x substeps, e.g. 1e13 (default 1e12, about "
                   "3 hours)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
 }
 
 void check_run_budget(const output::SceneToExport& scene, output::FrameSpan range,

@@ -20,7 +20,7 @@ struct LimitArgs {
   double max_drop_steps = 0;  ///< 0 = the default
 };
 
-/// Adds --max-memory and --max-drop-steps to a command that simulates into an output folder.
+/// Adds --max-memory and --max-drop-steps to a command that simulates (simulate, export, render).
 void add_limit_options(CLI::App& command, LimitArgs& limits);
 
 /// Estimates the run (output/budget.h) and throws output::BudgetExceeded past the limits, or

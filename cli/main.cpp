@@ -8,6 +8,7 @@
 
 #include "cli/command.h"
 #include "cli/exit_codes.h"
+#include "cli/options.h"
 
 namespace {
 
@@ -20,7 +21,9 @@ Commands, each with an example (`raintrace COMMAND --help` shows all options and
   render    simulate, export and ray-trace with POV-Ray, then movie and contact sheet
             raintrace render examples/default.toml -o out/default
   compare   image metrics and a difference report between two images or folders
-            raintrace compare tests/reference/default out/default/images
+            (here: the default example at its reference stills' size, against them)
+            raintrace render examples/default.toml -o out/check --width 160 --height 90 --frames 1-2
+            raintrace compare tests/reference/default out/check/images --fail 0.1 --fail-percent 0.5
 
 Scene files: docs/scene-format.md; examples: examples/*.toml.
 Exit codes: 0 success, 1 partly failed (frames, image differences), 2 unusable input,
@@ -30,9 +33,11 @@ Exit codes: 0 success, 1 partly failed (frames, image differences), 2 unusable i
 
 int main(int argc, char** argv) {
   namespace cli = raintrace::cli;
+  // Named here rather than taken from argv[0], so usage lines read the same wherever it runs.
   CLI::App app{
       "raintrace: physically based rain, simulated and ray-traced with POV-Ray.\n"
-      "Example: raintrace render examples/default.toml -o out/default"};
+      "Example: raintrace render examples/default.toml -o out/default",
+      "raintrace"};
   app.footer(kFooter);
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string{"raintrace " RAINTRACE_VERSION});
@@ -41,10 +46,12 @@ int main(int argc, char** argv) {
       cli::register_render_command(app), cli::register_compare_command(app)};
   try {
     app.parse(argc, argv);
+  } catch (const CLI::Success& e) {
+    app.exit(e);  // --help and --version
+    return cli::exit_code::ok;
   } catch (const CLI::ParseError& e) {
-    // --help and --version exit 0; every real parse error is "bad option", exit code 2.
-    const int code = app.exit(e);
-    return code == 0 ? cli::exit_code::ok : cli::exit_code::error;
+    fmt::print(stderr, "raintrace: error: {}\n", cli::option_error_text(app, e));
+    return cli::exit_code::error;
   }
   try {
     for (const auto& command : commands) {

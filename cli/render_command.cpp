@@ -7,12 +7,13 @@
 //
 // Options (each with an example in --help):
 //   --frames A-B   --jobs N   --width W --height H   --quality preview|final   --mask   --force
-//   --backend local|slurm   --partition P   --tasks K   --no-movie
+//   --backend local|slurm   --partition P   --tasks K   --no-movie   --seed N
 // Hidden: --slurm-task OUT, the worker each Slurm array task runs.
 #include <fmt/core.h>
 #include <unistd.h>
 #include <CLI/CLI.hpp>
 #include <atomic>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -26,6 +27,7 @@
 #include "cli/command.h"
 #include "cli/exit_codes.h"
 #include "cli/folder_run.h"
+#include "cli/options.h"
 #include "cli/scene.h"
 #include "cli/stop_signals.h"
 #include "output/export.h"
@@ -56,6 +58,7 @@ struct RenderArgs {
   bool no_movie = false;
   std::string slurm_task;
   LimitArgs limits;
+  std::optional<std::uint64_t> seed;  ///< none: the scene file's seed
 };
 
 constexpr const char* kFooter = R"(
@@ -68,7 +71,8 @@ Examples:
   raintrace render examples/default.toml -o out/masks --mask       # also images/mask_NNNN.png
   raintrace render examples/default.toml -o out/default --force    # re-render every frame
   raintrace render out/default                                     # an already exported folder
-  raintrace render examples/default.toml -o /shared/out --backend slurm --partition short --tasks 16
+  raintrace render examples/default.toml -o out/seed7 --seed 7   # other rain, same scene
+  raintrace render examples/default.toml -o out/cluster --backend slurm --tasks 4
 
 Locally, POV-Ray starts on each range of frames as soon as it is exported, while later
 frames are still simulated (Slurm exports everything first, then submits).
@@ -78,7 +82,8 @@ Output: OUT/images/frame_NNNN.png, OUT/animation.mp4 and .gif (needs ffmpeg),
 OUT/contact_sheet.png, OUT/manifest.json (per-frame status, image size and content hash,
 seconds: docs/output-folder.md), OUT/raintrace.lock, OUT/logs/.
 Slurm: OUT and the raintrace binary must be on a filesystem every node mounts at the same path;
-the nodes need POV-Ray. Each array task runs `raintrace render --slurm-task OUT`.
+the nodes need POV-Ray. Each array task runs `raintrace render --slurm-task OUT`. No cluster?
+scripts/slurm-localhost.sh starts a one-node one (README: Rendering on a Slurm cluster).
 OUT must be new, empty, or a folder raintrace made from the same scene and settings (seed,
 size, quality, masks): another scene's folder is refused unless --force, which deletes its
 frames and images first. A second run on the same folder stops at once and says who holds it.
@@ -230,9 +235,10 @@ RenderInput prepare(const RenderArgs& args, int povray_processes) {
       throw std::invalid_argument(
           "rendering an exported folder: leave out -o (or give the same folder)");
     }
-    if (args.width != 0 || args.height != 0 || !args.quality.empty()) {
+    if (args.width != 0 || args.height != 0 || !args.quality.empty() || args.seed) {
       throw std::invalid_argument(
-          "--width/--height/--quality change the scene: give the scene file, not the folder");
+          "--width/--height/--quality/--seed change the scene: give the scene file, not the "
+          "folder");
     }
     in.folder.emplace(output::FolderState::open(input, this_command()));
     const auto& manifest = in.folder->manifest();
@@ -249,6 +255,7 @@ RenderInput prepare(const RenderArgs& args, int povray_processes) {
   }
   if (args.out.empty()) throw std::invalid_argument("-o OUT is required with a scene file");
   Scene scene = load_scene_file(input);
+  if (args.seed) scene.sim.seed = *args.seed;
   if (args.width != 0) scene.look.width = args.width;
   if (args.height != 0) scene.look.height = args.height;
   if (!args.quality.empty()) {
@@ -377,26 +384,30 @@ Command register_render_command(CLI::App& app) {
   sub->add_option("--frames", args->frames, "Frame range A-B or one frame N (default: all)");
   sub->add_option("--jobs", args->jobs,
                   "POV-Ray processes in flight (default: cores/2 + 3, i.e. 4 on 2 cores)")
-      ->check(CLI::Range(1, 256));
+      ->check(whole_number_in(1, 256));
+  // The same ranges as the scene file's [output] width and height.
+  const sim::Range size =
+      sim::find_param<povgen::ExportParams>(povgen::kExportParams, "output", "width")->range;
   sub->add_option("--width", args->width, "Image width in pixels (overrides the scene)")
-      ->check(CLI::Range(16, 8192));
+      ->check(whole_number_in(static_cast<int>(size.min), static_cast<int>(size.max)));
   sub->add_option("--height", args->height, "Image height in pixels (overrides the scene)")
-      ->check(CLI::Range(16, 8192));
+      ->check(whole_number_in(static_cast<int>(size.min), static_cast<int>(size.max)));
   sub->add_option("--quality", args->quality,
                   "preview (no antialiasing, cheaper environment effects: RT_Preview=1) or "
                   "final (adaptive antialiasing, full effects)")
-      ->check(CLI::IsMember({"preview", "final"}));
+      ->check(one_of({"preview", "final"}));
   sub->add_flag("--mask", args->mask, "Also render rain masks (images/mask_NNNN.png)");
   sub->add_flag("--force", args->force,
                 "Render every frame again; and replace a folder made from another scene or with "
                 "other settings (its frames and images are deleted), or write into a non-empty "
                 "folder raintrace did not make");
   sub->add_option("--backend", args->backend, "local (default) or slurm (one job array)")
-      ->check(CLI::IsMember({"local", "slurm"}));
+      ->check(one_of({"local", "slurm"}));
   sub->add_option("--partition", args->partition, "Slurm partition (default: the cluster's)");
   sub->add_option("--tasks", args->tasks, "Slurm array tasks (default: one per ~8 frames)")
-      ->check(CLI::Range(1, 10000));
+      ->check(whole_number_in(1, 10000));
   sub->add_flag("--no-movie", args->no_movie, "Skip the MP4 and GIF");
+  add_seed_option(*sub, args->seed);
   add_limit_options(*sub, args->limits);
   sub->add_option("--slurm-task", args->slurm_task, "Worker mode inside a Slurm array task")
       ->group("");

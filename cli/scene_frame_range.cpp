@@ -34,9 +34,13 @@ FrameRange parse_frame_range(std::string_view text, int frames) {
   const long long last =
       dash == std::string_view::npos ? first : parse_frame_number(text.substr(dash + 1));
   if (first < 0 || last < 0) throw malformed();
-  if (first < 1 || last > frames || first > last) {
-    throw std::invalid_argument(fmt::format(
-        "--frames: {} is outside the scene's frames 1-{} (or A > B)", escaped(text), frames));
+  if (first > last) {
+    throw std::invalid_argument(
+        fmt::format("--frames: {} ends before it starts (A-B needs A <= B)", escaped(text)));
+  }
+  if (first < 1 || last > frames) {
+    throw std::invalid_argument(
+        fmt::format("--frames: {} is outside the scene's frames 1-{}", escaped(text), frames));
   }
   return {static_cast<int>(first), static_cast<int>(last)};
 }

@@ -1,5 +1,5 @@
 // The one user-supplied path that reaches POV-Ray text: [environment] include. POV-Ray in
-// Debian does not enforce its file-access restrictions (POVRAY-NOTES.md), so an include is a
+// Debian does not enforce its file-access restrictions (docs/povray-notes.md), so an include is a
 // program with the user's rights: it must be a plain, relative .inc inside the scene's folder.
 #pragma once
 

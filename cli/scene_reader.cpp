@@ -148,15 +148,20 @@ bool TableReader::read_number(std::string_view key, double& out, const Range& ra
   return true;
 }
 
-bool TableReader::read_integer(std::string_view key, int& out, int min, int max) {
+const SceneNode* TableReader::find_integer(std::string_view key) {
   const SceneNode* node = find(key);
-  if (node == nullptr) return false;
-  if (node->kind != SceneNode::Kind::integer) {
+  if (node != nullptr && node->kind != SceneNode::Kind::integer) {
     const std::string got = node->kind == SceneNode::Kind::floating
                                 ? "float " + describe_value(*node)
                                 : describe_value(*node);
     fail_at(node->where, full_key(key), "expected an integer, got " + got);
   }
+  return node;
+}
+
+bool TableReader::read_integer(std::string_view key, int& out, int min, int max) {
+  const SceneNode* node = find_integer(key);
+  if (node == nullptr) return false;
   if (node->integer < min || node->integer > max) {
     fail_at(node->where, full_key(key),
             fmt::format("must be in [{}, {}], got {}", min, max, node->integer));
@@ -166,14 +171,8 @@ bool TableReader::read_integer(std::string_view key, int& out, int min, int max)
 }
 
 bool TableReader::read_unsigned(std::string_view key, std::uint64_t& out) {
-  const SceneNode* node = find(key);
+  const SceneNode* node = find_integer(key);
   if (node == nullptr) return false;
-  if (node->kind != SceneNode::Kind::integer) {
-    const std::string got = node->kind == SceneNode::Kind::floating
-                                ? "float " + describe_value(*node)
-                                : describe_value(*node);
-    fail_at(node->where, full_key(key), "expected an integer, got " + got);
-  }
   if (node->integer < 0) {
     fail_at(node->where, full_key(key), fmt::format("must be >= 0, got {}", node->integer));
   }

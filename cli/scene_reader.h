@@ -68,6 +68,8 @@ class TableReader {
  private:
   /// Marks `key` as known and returns its value, or nullptr when absent.
   const SceneNode* find(std::string_view key);
+  /// find(), and throws SceneError at the value when it is not an integer.
+  const SceneNode* find_integer(std::string_view key);
   /// A number from an integer or a float node; throws when it is neither, or not finite.
   double number_of(const SceneNode& node, const std::string& key) const;
   [[noreturn]] void fail_at(SourceLocation where, const std::string& key,

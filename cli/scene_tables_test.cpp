@@ -18,6 +18,7 @@
 
 #include "cli/scene.h"
 #include "cli/scene_format_doc.h"
+#include "tests/support/command.h"
 
 namespace raintrace::cli {
 namespace {
@@ -153,12 +154,7 @@ TEST(SceneTables, EveryKeyIsReadOnceInItsSection) {
   }
 }
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test_support::read_text;
 
 TEST(SceneFormatDoc, ColumnsMatchTheParameterTables) {
   const fs::path doc = fs::path(RAINTRACE_SOURCE_DIR) / "docs" / "scene-format.md";

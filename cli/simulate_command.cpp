@@ -1,23 +1,27 @@
-// `raintrace simulate SCENE.toml [--frames A-B] [--seed N] [--stats FILE.json] [--threads N]`:
-// runs the simulation alone (no POV-Ray), feeds every frame of the range to sim's
-// StatisticsCollector, prints a one-line summary and optionally writes the statistics as JSON.
-// Useful to check a scene's drop count and rain rate before paying for a render.
+// `raintrace simulate SCENE.toml [--frames A-B] [--seed N] [--stats FILE.json] [--threads N]
+// [--max-memory SIZE] [--max-drop-steps N]`: runs the simulation alone (no POV-Ray), feeds every
+// frame of the range to sim's StatisticsCollector, prints a one-line summary and optionally
+// writes the statistics as JSON. Useful to check a scene's drop count and rain rate before
+// paying for a render. A scene past the work or memory limits stops before it starts, as in
+// export and render.
 #include <fmt/core.h>
 #include <unistd.h>
 #include <CLI/CLI.hpp>
-#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <system_error>
 
 #include "cli/command.h"
 #include "cli/exit_codes.h"
+#include "cli/folder_run.h"
+#include "cli/options.h"
 #include "cli/scene.h"
 #include "cli/scene_error.h"
 #include "sim/statistics.h"
@@ -29,9 +33,10 @@ namespace {
 struct SimulateArgs {
   std::string scene;
   std::string frames;
-  std::string seed;  ///< empty: the scene file's seed
+  std::optional<std::uint64_t> seed;  ///< none: the scene file's seed
   std::string stats;
   int threads = 0;
+  LimitArgs limits;
 };
 
 constexpr const char* kFooter = R"(
@@ -53,7 +58,9 @@ samples}], horizontal_velocity_m_per_s [x, z], horizontal_motion_by_frame
 wind_m_per_s [x, z]}], splashes,
 ground {impacts, splashes, ripples, impacts_simulated, area_m2, impacts_per_m2_s},
 lightning {strikes, segments}, plus scene, seed, frame_range, time_s, raintrace_version.
-Exit codes: 0 done, 2 bad scene file or option.)";
+A scene asking for more memory or simulation than --max-memory/--max-drop-steps allow
+stops before it starts, naming the scene keys to change.
+Exit codes: 0 done, 2 bad scene file, option, or a scene past those limits.)";
 
 /// Progress on stderr: a self-updating line on a terminal, a plain line every few seconds
 /// otherwise (logs, CI), nothing for runs shorter than that.
@@ -163,23 +170,12 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
   }
 }
 
-/// A whole number in [0, 2^64 − 1]; CLI11 2.1 would wrap "-1" around to 2^64 − 1.
-std::uint64_t parse_seed(const std::string& text) {
-  std::uint64_t seed = 0;
-  const char* end = text.data() + text.size();
-  const auto [stop, error] = std::from_chars(text.data(), end, seed);
-  if (text.empty() || text.front() == '-' || error != std::errc{} || stop != end) {
-    throw std::invalid_argument(fmt::format(
-        "--seed: expected a whole number in [0, 18446744073709551615], got {}", in_quotes(text)));
-  }
-  return seed;
-}
-
 int run_simulate(const SimulateArgs& args) {
   Scene scene = load_scene_file(args.scene);
-  if (!args.seed.empty()) scene.sim.seed = parse_seed(args.seed);
+  if (args.seed) scene.sim.seed = *args.seed;
   scene.sim.threads = args.threads;
   const FrameRange range = parse_frame_range(args.frames, scene.frames);
+  check_run_budget(scene_to_export(scene), {range.first, range.last}, 0, args.limits);
 
   sim::World world(scene.sim);
   sim::StatisticsCollector collector(scene.sim);
@@ -224,10 +220,11 @@ Command register_simulate_command(CLI::App& app) {
   sub->footer(kFooter);
   sub->add_option("scene", args->scene, "Scene file (TOML, see docs/scene-format.md)")->required();
   sub->add_option("--frames", args->frames, "Frames to count: A-B or N (default: all)");
-  sub->add_option("--seed", args->seed, "Random seed, overrides the scene file's seed");
+  add_seed_option(*sub, args->seed);
   sub->add_option("--stats", args->stats, "Write statistics as JSON to this file ('-': stdout)");
   sub->add_option("--threads", args->threads, "Worker threads, 0 = all cores (same results)")
-      ->check(CLI::Range(0, 1024));
+      ->check(whole_number_in(0, 1024));
+  add_limit_options(*sub, args->limits);
   return {sub, [args] { return run_simulate(*args); }};
 }
 

@@ -6,9 +6,6 @@
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
-#include <sys/wait.h>
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <regex>
@@ -16,28 +13,18 @@
 
 #include "compare/compare_run.h"
 #include "compare/test_files.h"
+#include "tests/support/command.h"
 
 namespace raintrace::compare {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr const char* kIdiff = "/usr/bin/idiff";
+using IdiffResult = test_support::CommandResult;
 
-struct IdiffResult {
-  int exit_code = -1;
-  std::string output;
-};
+bool have_idiff() { return test_support::run_command("command -v idiff").exit_code == 0; }
 
 IdiffResult run_idiff(const std::string& args) {
-  IdiffResult r;
-  const std::string command = std::string(kIdiff) + " -v " + args + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf;
-  while (fgets(buf.data(), int(buf.size()), pipe)) r.output += buf.data();
-  const int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  return test_support::run_command("idiff -v " + args);
 }
 
 double field(const std::string& text, const std::string& name) {
@@ -82,8 +69,7 @@ void write_pair(const fs::path& a, const fs::path& b, OIIO::TypeDesc format, int
 class IdiffAgreement : public ::testing::TestWithParam<std::tuple<std::string, int>> {
  protected:
   void SetUp() override {
-    if (!fs::exists(kIdiff))
-      GTEST_SKIP() << kIdiff << " not found (apt-get install openimageio-tools)";
+    if (!have_idiff()) GTEST_SKIP() << "idiff not found (apt-get install openimageio-tools)";
   }
 };
 
@@ -134,7 +120,7 @@ INSTANTIATE_TEST_SUITE_P(Formats, IdiffAgreement,
                                            std::make_tuple(std::string("tif"), 1)));
 
 TEST(IdiffAgreementVerdict, FailPercentBoundaryAgrees) {
-  if (!fs::exists(kIdiff)) GTEST_SKIP() << kIdiff << " not found";
+  if (!have_idiff()) GTEST_SKIP() << "idiff not found (apt-get install openimageio-tools)";
   // 10×10 grey, exactly 5 pixels off by 0.2: at 5 % both pass (5 > 5 is false), at 4 % both
   // fail — the "strictly more than" rule of idiff.
   testing_support::TempDir tmp;

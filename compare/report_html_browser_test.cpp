@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <sstream>
 #include <string>
 
 #include "compare/compare_run.h"
@@ -68,10 +69,9 @@ TEST(HtmlReportInChromium, AllImagesLoadAndThePageIsNotBlank) {
   write_html(html, report);
 
   // 3 frames × 3 images + the one-sided frame's reference = 10 images.
-  const std::string page =
-      (std::ifstream(html)
-           ? std::string(std::istreambuf_iterator<char>(std::ifstream(html).rdbuf()), {})
-           : std::string());
+  std::ostringstream page_bytes;
+  page_bytes << std::ifstream(html).rdbuf();
+  const std::string page = page_bytes.str();
   const auto count = [](const std::string& text, const std::regex& re) {
     return std::distance(std::sregex_iterator(text.begin(), text.end(), re),
                          std::sregex_iterator());

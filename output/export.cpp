@@ -3,6 +3,7 @@
 #include "output/export.h"
 
 #include <algorithm>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -11,6 +12,7 @@
 #include "povgen/frame_text.h"
 #include "povgen/frame_values.h"
 #include "povgen/output_folder.h"
+#include "povgen/scene_files.h"
 #include "sim/world.h"
 
 namespace raintrace::output {
@@ -19,6 +21,20 @@ namespace {
 int writer_threads(int requested) {
   if (requested > 0) return requested;
   return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+/// The frames scene.ini renders: this export's range, widened by the frames earlier exports
+/// left in the folder that join it without a gap, so that `povray scene.ini` renders frames
+/// that all exist (after exports in order, every frame the folder holds).
+povgen::FrameSubset frames_in_folder(const Manifest& manifest, FrameSpan range, int frame_count) {
+  std::set<int> earlier;
+  for (const FrameEntry& frame : manifest.frames) {
+    if (frame.number >= 1 && frame.number <= frame_count) earlier.insert(frame.number);
+  }
+  povgen::FrameSubset frames{range.first, range.last};
+  while (earlier.count(frames.first - 1) != 0) --frames.first;
+  while (earlier.count(frames.last + 1) != 0) ++frames.last;
+  return frames;
 }
 
 }  // namespace
@@ -45,7 +61,8 @@ bool export_frames(FolderState& folder, const SceneToExport& scene, FrameSpan ra
   const povgen::ExportParams& look = scene.look;
   const std::filesystem::path& out_dir = folder.dir();
   const std::string shared_hash =
-      povgen::write_shared_files(out_dir, look, scene.frames, scene.scene_dir);
+      povgen::write_shared_files(out_dir, look, scene.frames, scene.scene_dir,
+                                 frames_in_folder(folder.manifest(), range, scene.frames));
   folder.begin_export(shared_hash, range, scene.frames);
   if (hooks.on_shared_files) hooks.on_shared_files();
 

@@ -1,14 +1,13 @@
-// Frame values → POV-Ray text, written with write_number() into reserved buffers. Large
-// sections are cut into chunks that threads fill independently and join in order, so the
-// bytes never depend on the thread count.
+// Frame values → POV-Ray text: each item's line is made in a bounds-checked buffer (Line) with
+// number_format.h's writers and appended to its chunk's string. Large sections are cut into
+// chunks that threads fill independently and join in order, so the bytes never depend on the
+// thread count.
 #include "povgen/frame_text.h"
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <cstring>
 #include <functional>
-#include <memory>
 #include <stdexcept>
 #include <string_view>
 #include <vector>
@@ -21,62 +20,30 @@
 namespace raintrace::povgen {
 namespace {
 
-/// Characters one item can take at most, for reserving: a streak's 4 vertices are 12 numbers
-/// plus punctuation; spheres 5 numbers; index triples 3 integers.
-constexpr std::size_t kNumberSpace = max_number_chars + 1;
 /// Items per chunk: big enough to amortise a thread hand-off, small enough that a chunk's text
 /// (a few MB) stays reusable and warm instead of page-faulting fresh memory every frame.
 constexpr std::size_t kChunk = 16384;
+/// Typical bytes of one item's text, to reserve a chunk's buffer once: a streak's corner line
+/// ~110, its two index lines ~40 each, a sphere line ~45.
+constexpr std::size_t kItemBytes = 128;
 
-/// A growable byte buffer that is never zero-filled: text is written straight into it.
-class Buffer {
+/// One item's line of text (a sphere, a streak's corners, a quad's index triples), made in a
+/// fixed buffer and appended to its chunk's string in one go. Every write checks the room left
+/// first (the number writers are given the buffer's end), so a line can never overrun it.
+class Line {
  public:
-  void clear() { m_size = 0; }
-  /// Makes room for `bytes` more and returns where they go.
-  char* reserve_more(std::size_t bytes) {
-    if (m_size + bytes > m_capacity) {
-      const std::size_t capacity = std::max(m_size + bytes, 2 * m_capacity);
-      std::unique_ptr<char[]> grown(new char[capacity]);
-      if (m_size > 0) std::memcpy(grown.get(), m_data.get(), m_size);
-      m_data = std::move(grown);
-      m_capacity = capacity;
-    }
-    return m_data.get() + m_size;
+  void put(char c) {
+    require(1);
+    m_text[m_size++] = c;
   }
-  void commit(char* end) { m_size = static_cast<std::size_t>(end - m_data.get()); }
-  [[nodiscard]] std::string_view view() const { return {m_data.get(), m_size}; }
-
- private:
-  std::unique_ptr<char[]> m_data;
-  std::size_t m_size = 0;
-  std::size_t m_capacity = 0;
-};
-
-/// Writes into a Buffer region reserved up front: no bounds checks in the hot loops.
-class Writer {
- public:
-  Writer(Buffer& buffer, std::size_t bytes) : m_buffer(buffer), m_p(buffer.reserve_more(bytes)) {}
-  ~Writer() { m_buffer.commit(m_p); }
-  Writer(const Writer&) = delete;
-  Writer& operator=(const Writer&) = delete;
-  void put(char c) { *m_p++ = c; }
-  void put(std::string_view s) {
-    std::memcpy(m_p, s.data(), s.size());
-    m_p += s.size();
+  void put(std::string_view piece) {
+    require(piece.size());
+    std::copy(piece.begin(), piece.end(), m_text.begin() + static_cast<std::ptrdiff_t>(m_size));
+    m_size += piece.size();
   }
-  /// The first `length` bytes of text (at most 8, in reading order).
-  void put_word(std::uint64_t text, int length) {
-    detail::store_8(m_p, text);
-    m_p += length;
-  }
-  void put(const char* s) {
-    const std::size_t n = std::strlen(s);
-    std::memcpy(m_p, s, n);
-    m_p += n;
-  }
-  void number(double v) { m_p = write_number(m_p, v); }
-  void fixed5(double v) { m_p = write_fixed5(m_p, v); }
-  void index(std::uint64_t v) { m_p = write_index(m_p, v); }
+  void number(double v) { m_size = end_of(write_number(cursor(), limit(), v)); }
+  void fixed5(double v) { m_size = end_of(write_fixed5(cursor(), limit(), v)); }
+  void index(std::uint64_t v) { m_size = end_of(write_index(cursor(), limit(), v)); }
   void vec(const glm::vec3& v) {
     put('<');
     number(v.x);
@@ -86,10 +53,29 @@ class Writer {
     number(v.z);
     put('>');
   }
+  /// Appends the line to `text` and starts the next one.
+  void append_to(std::string& text) {
+    text.append(m_text.data(), m_size);
+    m_size = 0;
+  }
 
  private:
-  Buffer& m_buffer;
-  char* m_p;
+  /// The longest line: a streak's 4 corners of 3 numbers each, with their punctuation.
+  static constexpr std::size_t kCapacity = 16 * kMaxNumberChars;
+
+  void require(std::size_t chars) const {
+    if (chars > kCapacity - m_size) {
+      throw std::length_error("write_frame_text: an item's text is longer than a line");
+    }
+  }
+  char* cursor() { return m_text.data() + m_size; }
+  char* limit() { return m_text.data() + kCapacity; }
+  std::size_t end_of(const char* end) const {
+    return static_cast<std::size_t>(end - m_text.data());
+  }
+
+  std::array<char, kCapacity> m_text{};
+  std::size_t m_size = 0;
 };
 
 /// Sends text to the sink in order. Small pieces are gathered; large sections are cut into
@@ -106,56 +92,56 @@ class Emitter {
 
   void text(std::string_view piece) { m_pending += piece; }
   void number(double v) { append_number(m_pending, v); }
-  void index(std::size_t v) {
-    char buffer[max_number_chars];
-    m_pending.append(buffer, write_index(buffer, v));
-  }
+  void index(std::size_t v) { append_index(m_pending, v); }
   void flush() {
     if (!m_pending.empty()) m_sink(m_pending);
     m_pending.clear();
   }
 
-  /// write(begin, end, buffer) writes items [begin, end) into buffer. Each worker thread
-  /// fills its own buffer, and hands it to the sink in chunk order (ordered_chunks).
+  /// write(begin, end, buffer) appends the text of items [begin, end) to buffer. Each worker
+  /// thread fills its own buffer, and hands it to the sink in chunk order (ordered_chunks).
   template <typename Write>
   void chunks(std::size_t count, const Write& write) {
     flush();
     ordered_chunks((count + kChunk - 1) / kChunk, static_cast<int>(m_workers),
                    [&](std::size_t c, std::size_t w) {
-                     m_buffers[w].clear();
-                     write(c * kChunk, std::min(count, (c + 1) * kChunk), m_buffers[w]);
+                     std::string& buffer = m_buffers[w];
+                     buffer.clear();  // keeps its capacity from chunk to chunk
+                     buffer.reserve(kChunk * kItemBytes);
+                     write(c * kChunk, std::min(count, (c + 1) * kChunk), buffer);
                    },
-                   [&](std::size_t, std::size_t w) { m_sink(m_buffers[w].view()); });
+                   [&](std::size_t, std::size_t w) { m_sink(m_buffers[w]); });
   }
 
  private:
   const TextSink& m_sink;
   std::size_t m_workers;
-  std::vector<Buffer> m_buffers;
+  std::vector<std::string> m_buffers;
   std::string m_pending;
 };
 
 void write_spheres(const std::vector<SphereValue>& spheres, std::size_t begin, std::size_t end,
-                   Buffer& buffer) {
-  Writer w(buffer, (end - begin) * (8 * kNumberSpace + 40));
+                   std::string& text) {
+  Line line;
   for (std::size_t i = begin; i < end; ++i) {
     const SphereValue& s = spheres[i];
     if (s.axis_ratio == 1.0f) {
-      w.put("sphere{");
-      w.vec(s.centre);
-      w.put(',');
-      w.number(s.radius);
-      w.put("}\n");
+      line.put("sphere{");
+      line.vec(s.centre);
+      line.put(',');
+      line.number(s.radius);
+      line.put("}\n");
     } else {
       // Flattened about its own centre: scale first, then move into place.
-      w.put("sphere{0,");
-      w.number(s.radius);
-      w.put(" scale<1,");
-      w.number(s.axis_ratio);
-      w.put(",1>translate");
-      w.vec(s.centre);
-      w.put("}\n");
+      line.put("sphere{0,");
+      line.number(s.radius);
+      line.put(" scale<1,");
+      line.number(s.axis_ratio);
+      line.put(",1>translate");
+      line.vec(s.centre);
+      line.put("}\n");
     }
+    line.append_to(text);
   }
 }
 
@@ -163,8 +149,8 @@ void write_sphere_union(Emitter& out, const std::vector<SphereValue>& spheres,
                         const char* material) {
   if (spheres.empty()) return;
   out.text("union{\n");
-  out.chunks(spheres.size(), [&](std::size_t b, std::size_t e, Buffer& buffer) {
-    write_spheres(spheres, b, e, buffer);
+  out.chunks(spheres.size(), [&](std::size_t b, std::size_t e, std::string& text) {
+    write_spheres(spheres, b, e, text);
   });
   out.text("material{");
   out.text(material);
@@ -175,61 +161,35 @@ void write_sphere_union(Emitter& out, const std::vector<SphereValue>& spheres,
 
 /// One streak's vertex line. Corners are written to 10 µm in fixed point (write_fixed5), not
 /// with 7 significant digits: a streak is at least a pixel wide, and a pixel is far wider than
-/// 10 µm wherever a streak is drawn, while the fixed-point writer is several times faster —
-/// and a million-drop frame is mostly these 12 numbers per streak.
-void write_corners(Writer& w, const std::array<glm::vec3, 4>& corners) {
+/// 10 µm wherever a streak is drawn.
+void write_corners(Line& line, const std::array<glm::vec3, 4>& corners) {
   for (const glm::vec3& c : corners) {
-    w.put('<');
-    w.fixed5(c.x);
-    w.put(',');
-    w.fixed5(c.y);
-    w.put(',');
-    w.fixed5(c.z);
-    w.put(">,");
+    line.put('<');
+    line.fixed5(c.x);
+    line.put(',');
+    line.fixed5(c.y);
+    line.put(',');
+    line.fixed5(c.z);
+    line.put(">,");
   }
-  w.put('\n');
+  line.put('\n');
 }
 
 /// Index triples of the two triangles of each quad: <v, v+1, v+2>, <v, v+2, v+3>.
-void write_triangle_pairs(Writer& w, std::uint64_t v) {
-  w.put('<');
-  w.index(v);
-  w.put(',');
-  w.index(v + 1);
-  w.put(',');
-  w.index(v + 2);
-  w.put(">,<");
-  w.index(v);
-  w.put(',');
-  w.index(v + 2);
-  w.put(',');
-  w.index(v + 3);
-  w.put(">,\n");
-}
-
-/// write_triangle_pairs(w, 4 * quad) for a million quads with two digit conversions instead of
-/// six: v = 4·quad and v + 2 are even, so v + 1 and v + 3 never carry into another digit.
-void write_face_pairs(Writer& w, std::uint64_t quad) {
-  const std::uint64_t v = 4 * quad;
-  if (v + 3 >= detail::kEightDigits) {
-    write_triangle_pairs(w, v);
-    return;
-  }
-  const detail::IndexText a = detail::index_text(static_cast<std::uint32_t>(v));
-  const detail::IndexText c = detail::index_text(static_cast<std::uint32_t>(v + 2));
-  w.put('<');
-  w.put_word(a.text, a.length);
-  w.put(',');
-  w.put_word(a.plus(1), a.length);
-  w.put(',');
-  w.put_word(c.text, c.length);
-  w.put(">,<");
-  w.put_word(a.text, a.length);
-  w.put(',');
-  w.put_word(c.text, c.length);
-  w.put(',');
-  w.put_word(c.plus(1), c.length);
-  w.put(">,\n");
+void write_triangle_pairs(Line& line, std::uint64_t v) {
+  line.put('<');
+  line.index(v);
+  line.put(',');
+  line.index(v + 1);
+  line.put(',');
+  line.index(v + 2);
+  line.put(">,<");
+  line.index(v);
+  line.put(',');
+  line.index(v + 2);
+  line.put(',');
+  line.index(v + 3);
+  line.put(">,\n");
 }
 
 /// The atlas cells a frame's streaks use, in cell order, and each cell's place among them:
@@ -261,13 +221,10 @@ UsedCells used_cells(const std::vector<StreakValue>& streaks, const StreakAtlasL
 /// cell, so they are written once per frame and copied.
 std::vector<std::string> uv_index_lines(std::size_t cells) {
   std::vector<std::string> lines(cells);
+  Line line;
   for (std::size_t slot = 0; slot < lines.size(); ++slot) {
-    Buffer buffer;
-    {
-      Writer w(buffer, 6 * kNumberSpace + 16);
-      write_triangle_pairs(w, 4 * slot);
-    }
-    lines[slot] = buffer.view();
+    write_triangle_pairs(line, 4 * slot);
+    line.append_to(lines[slot]);
   }
   return lines;
 }
@@ -280,9 +237,12 @@ void write_streak_mesh(Emitter& out, const std::vector<StreakValue>& streaks,
   out.text("mesh2{\nvertex_vectors{");
   out.index(4 * n);
   out.text(",\n");
-  out.chunks(n, [&](std::size_t b, std::size_t e, Buffer& buffer) {
-    Writer w(buffer, (e - b) * (12 * kNumberSpace + 16));
-    for (std::size_t i = b; i < e; ++i) write_corners(w, streaks[i].corners);
+  out.chunks(n, [&](std::size_t b, std::size_t e, std::string& text) {
+    Line line;
+    for (std::size_t i = b; i < e; ++i) {
+      write_corners(line, streaks[i].corners);
+      line.append_to(text);
+    }
   });
   // One uv quad per used atlas cell, inset by half a texel so filtering never reads a
   // neighbour. Corners 0, 1 (trailing end) take the cell's top, 2, 3 (leading end) its bottom.
@@ -311,19 +271,21 @@ void write_streak_mesh(Emitter& out, const std::vector<StreakValue>& streaks,
   out.text("}\nface_indices{");
   out.index(2 * n);
   out.text(",\n");
-  out.chunks(n, [&](std::size_t b, std::size_t e, Buffer& buffer) {
-    Writer w(buffer, (e - b) * (6 * kNumberSpace + 16));
-    for (std::size_t i = b; i < e; ++i) write_face_pairs(w, i);
+  out.chunks(n, [&](std::size_t b, std::size_t e, std::string& text) {
+    Line line;
+    for (std::size_t i = b; i < e; ++i) {
+      write_triangle_pairs(line, 4 * i);
+      line.append_to(text);
+    }
   });
   const std::vector<std::string> uv_lines = uv_index_lines(used.cells.size());
   out.text("}\nuv_indices{");
   out.index(2 * n);
   out.text(",\n");
-  out.chunks(n, [&](std::size_t b, std::size_t e, Buffer& buffer) {
-    Writer w(buffer, (e - b) * (6 * kNumberSpace + 16));
+  out.chunks(n, [&](std::size_t b, std::size_t e, std::string& text) {
     for (std::size_t i = b; i < e; ++i) {
-      w.put(
-          uv_lines[static_cast<std::size_t>(used.slot[static_cast<std::size_t>(streaks[i].cell)])]);
+      text +=
+          uv_lines[static_cast<std::size_t>(used.slot[static_cast<std::size_t>(streaks[i].cell)])];
     }
   });
   out.text("}\ntexture{RT_StreakTexture}\nno_shadow hollow\n}\n");

@@ -1,5 +1,5 @@
 // Part (b) of scene generation: frame values → the text of frames/frame_NNNN.pov. Pure.
-// Encodings follow shared/POVRAY-NOTES.md: near drops are bare spheres in one union sharing
+// Encodings follow docs/povray-notes.md: near drops are bare spheres in one union sharing
 // RT_DropMaterial (never merge), far drops are quads in one mesh2 with shared uv_vectors into
 // the streak atlas, bolts are emissive cylinders. No free text is ever written.
 #pragma once

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "povgen/frame_values.h"
-#include "povgen/synthetic_rain.h"
+#include "povgen/test_support/synthetic_rain.h"
 
 namespace raintrace::povgen {
 namespace {
@@ -148,7 +148,8 @@ TEST(FrameText, StreakCellOutsideTheAtlasIsRefused) {
 TEST(FrameText, SameFrameGivesIdenticalBytesWhateverTheThreadCount) {
   ExportParams look;
   look.min_streak_coverage = 0.0;  // every drop a streak: several chunks
-  const sim::Frame frame = synthetic_rain(60000, look.camera, 16.0 / 9.0, 12.0, 2.0, 3);
+  const sim::Frame frame =
+      test_support::synthetic_rain(60000, look.camera, 16.0 / 9.0, 12.0, 2.0, 3);
   const FrameValues values = build_frame_values(frame, look);
   ASSERT_GT(values.streaks.size(), 40000u);  // several chunks of 16384
   const std::string one = frame_text(values, {}, 1);

@@ -11,6 +11,7 @@
 #include "povgen/ordered_chunks.h"
 #include "povgen/scene_files.h"
 #include "povgen/view_frustum.h"
+#include "sim/random.h"
 #include "sim/streak.h"
 
 namespace raintrace::povgen {
@@ -28,15 +29,9 @@ struct StreakContext {
   float min_coverage;
 };
 
-/// A number in [0, 1) that depends only on the drop's id (splitmix64's finaliser): which far
-/// drops survive the level of detail is the same in every frame and for every thread count.
-float id_unit(std::uint64_t id) {
-  std::uint64_t z = id + 0x9e3779b97f4a7c15ull;
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-  z ^= z >> 31;
-  return static_cast<float>(z >> 40) * 0x1.0p-24f;
-}
+/// A number in [0, 1) that depends only on the drop's id (sim's hash): which far drops survive
+/// the level of detail is the same in every frame and for every thread count.
+float id_unit(std::uint64_t id) { return static_cast<float>(sim::mix64(id) >> 40) * 0x1.0p-24f; }
 
 /// Builds the quad of one far drop; false when it is culled or thinned out. `weight` is the
 /// drop's opacity (vanishing), a level-of-detail weight that may exceed 1.

@@ -9,7 +9,7 @@
 #include <limits>
 
 #include "povgen/drop_shape.h"
-#include "povgen/synthetic_rain.h"
+#include "povgen/test_support/synthetic_rain.h"
 #include "povgen/view_frustum.h"
 
 namespace raintrace::povgen {
@@ -428,7 +428,8 @@ TEST(FrameValues, SameFrameGivesIdenticalValuesWhateverTheThreadCount) {
   look.width = 1920;
   look.height = 1080;
   look.camera.exposure_s = 0.0;  // near drops stay spheres
-  const sim::Frame frame = synthetic_rain(60000, look.camera, 16.0 / 9.0, 12.0, 2.0, 3);
+  const sim::Frame frame =
+      test_support::synthetic_rain(60000, look.camera, 16.0 / 9.0, 12.0, 2.0, 3);
   const FrameValues one = build_frame_values(frame, look, {}, 1);
   ASSERT_GT(one.drops.size(), 100u);
   ASSERT_GT(one.streaks.size(), 40000u);
@@ -436,7 +437,8 @@ TEST(FrameValues, SameFrameGivesIdenticalValuesWhateverTheThreadCount) {
     EXPECT_EQ(differences(one, build_frame_values(frame, look, {}, threads)), 0u) << threads;
   }
   // Reusing a FrameValues that holds another frame gives the same values too.
-  FrameValues reused = build_frame_values(synthetic_rain(5000, look.camera, 16.0 / 9.0), look);
+  FrameValues reused =
+      build_frame_values(test_support::synthetic_rain(5000, look.camera, 16.0 / 9.0), look);
   build_frame_values(frame, look, reused, {}, 2);
   EXPECT_EQ(differences(one, reused), 0u);
 }

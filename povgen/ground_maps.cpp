@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <numbers>
 #include <stdexcept>
 
 #include "sim/ground_impacts.h"
@@ -13,7 +14,7 @@
 namespace raintrace::povgen {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = std::numbers::pi;
 
 std::uint16_t to_u16(double v) {
   return static_cast<std::uint16_t>(std::lround(std::clamp(v, 0.0, 1.0) * 65535.0));
@@ -127,7 +128,7 @@ bool stir_film(const GroundPixels& pixels, const sim::Ripple& ripple, RippleMap&
     map.film[p] = std::min(1.0f, map.film[p] + static_cast<float>(amount));
   };
   const sim::PixelSpan span = pixels.span(centre);
-  const double patch = 3.14159265358979323846 * radius * radius;
+  const double patch = kPi * radius * radius;
   const double pixel = span.across_m * span.along_m;
   if (patch < pixel) {
     add(centre, stir * patch / pixel);

@@ -1,124 +1,101 @@
-// Fast 7-significant-digit formatting. The common case (|v| in [1e-3, 1e7), which covers every
-// coordinate and radius raintrace writes) is rounded to an integer of at most 8 digits, written
-// as 8 zero-padded digits with a two-digit table, and the point goes in between; everything
-// else goes through std::to_chars. Text is written a word at a time and trimmed afterwards, so
-// the hot path has no division loops and few data-dependent branches. write_fixed5() and
-// write_index() are inline in the header; only their rare cases live here.
+// Number text (see number_format.h). Both number writers round the value to an integer count
+// of its last digit's unit and let std::to_chars write that integer; the decimal point is put
+// back in front of the last `decimals` digits.
 #include "povgen/number_format.h"
 
+#include <algorithm>
 #include <array>
-#include <bit>
 #include <charconv>
 #include <cmath>
-#include <cstring>
 #include <stdexcept>
-#include <string>
 
 namespace raintrace::povgen {
 namespace {
 
-using detail::eight_digits;
-using detail::kZeroChars;
-using detail::store_8;
+/// 10^0 … 10^9, exact.
+constexpr std::array<double, 10> kScale{1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9};
+/// Where a value gains an integer digit and so needs one decimal fewer, from 1e-2 to 1e6.
+constexpr std::array<double, 9> kDecades{1e-2, 1e-1, 1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6};
 
-constexpr std::array<double, 10> kPow10{1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9};
-
-/// Decimals that give 7 significant digits for magnitude in [1e-3, 1e7): 9 at 1e-3, one fewer
-/// per power of ten, 0 from 1e6 on. Comparisons instead of a loop: no branch to mispredict.
-int decimals_for(double magnitude) {
-  return 9 - (magnitude >= 1e-2) - (magnitude >= 1e-1) - (magnitude >= 1e0) - (magnitude >= 1e1) -
-         (magnitude >= 1e2) - (magnitude >= 1e3) - (magnitude >= 1e4) - (magnitude >= 1e5) -
-         (magnitude >= 1e6);
+void require_room(const char* first, const char* last) {
+  if (last - first < static_cast<std::ptrdiff_t>(kMaxNumberChars)) {
+    throw std::length_error("number text: fewer than kMaxNumberChars characters of room");
+  }
 }
 
-/// write_number() for magnitude in [1e-3, 1e7).
-char* write_fixed(char* out, double value, double magnitude) {
-  const int decimals = decimals_for(magnitude);
-  // Round half away from zero, as llround, without the libm call (magnitude > 0 here). At most
-  // 10^7 (9999999.5 rounds up), so 8 digits always hold it.
-  const auto scaled =
-      static_cast<std::uint32_t>(magnitude * kPow10[static_cast<std::size_t>(decimals)] + 0.5);
-  if (scaled == 0) {
-    *out = '0';
-    return out + 1;
-  }
-  const std::uint64_t digits = eight_digits(scaled);  // non-zero: scaled > 0
-  const int leading_zeros = std::countr_zero(digits) / 8;
-  const int trailing_zeros = std::countl_zero(digits) / 8;
-  const std::uint64_t text = digits + kZeroChars;
-  // Trailing zeros of the fraction are dropped, as the shortest form of the same value.
-  const int fraction_length = std::max(decimals - trailing_zeros, 0);
-
-  *out = '-';
-  out += value < 0;
-  std::uint64_t fraction = text;
-  if (decimals >= 8) {
-    // Below 0.1 all 8 digits are decimals, below 0.01 after one more zero.
-    *out++ = '0';
-    if (decimals == 9) fraction = (fraction << 8) | '0';
-  } else {
-    // Integer digits are those left of the last `decimals`; keep at least one.
-    const int integer_begin = std::min(leading_zeros, 7 - decimals);
-    store_8(out, text >> (8 * integer_begin));
-    out += 8 - decimals - integer_begin;
-    // (With no decimals there is no fraction, and a shift by 64 bits would be undefined.)
-    if (decimals > 0) fraction = text >> (8 * (8 - decimals));
-  }
-  if (fraction_length > 0) {
-    *out++ = '.';
-    store_8(out, fraction);
-    if (decimals == 9) out[8] = static_cast<char>(text >> 56);
-    out += fraction_length;
-  }
-  return out;
+/// ±count / 10^decimals in its shortest fixed form ("0.00123" for 123 and 5, "12" for 1200
+/// and 2), with a minus sign only when count is not zero. decimals <= 9; the text is made in a
+/// local buffer (std::to_chars is given its end) and copied to `first`.
+char* write_scaled(char* first, bool negative, std::uint64_t count, int decimals) {
+  char buffer[kMaxNumberChars];
+  char* begin = buffer + 12;  // room in front for zeros, the shifted integer part and a sign
+  char* const last = std::to_chars(begin, buffer + kMaxNumberChars, count).ptr;
+  while (last - begin <= decimals) *--begin = '0';  // at least one digit before the point
+  char* const point = last - decimals;
+  char* end = last;
+  while (end > point && end[-1] == '0') --end;  // trailing zeros of the fraction
+  // Move the integer digits one to the left and put the point where the last one was; without
+  // a fraction, no point.
+  std::copy(begin, point, begin - 1);
+  --begin;
+  point[-1] = '.';
+  if (end == point) end = point - 1;
+  if (negative && count != 0) *--begin = '-';
+  return std::copy(begin, end, first);
 }
+
+/// Rounds a magnitude (>= 0) half away from zero to an integer: the rule of every number text
+/// since the first reference stills.
+std::uint64_t rounded(double magnitude) { return static_cast<std::uint64_t>(magnitude + 0.5); }
 
 }  // namespace
 
-namespace detail {
-
-char* write_fixed5_rare(char* out, double value, double magnitude) {
-  // Also taken for NaN: non-finite values reach write_number(), which refuses them.
-  if (!(magnitude < 1e12)) return write_number(out, value);
-  // Round half away from zero, as the fast path; below 10^17 steps fit 64 bits.
-  const auto steps = static_cast<std::uint64_t>(magnitude * 1e5 + 0.5);
-  *out = '-';
-  out += value < 0;
-  out = write_index(out, steps / 100'000);
-  const auto fraction = static_cast<std::uint32_t>(steps % 100'000);
-  if (fraction == 0) return out;
-  // The fraction's 5 digits are the last 5 of the eight: bytes 3..7 of the word.
-  const std::uint64_t digits = eight_digits(fraction);
-  *out++ = '.';
-  store_8(out, (digits + kZeroChars) >> 24);
-  return out + 5 - std::countl_zero(digits) / 8;
-}
-
-char* write_index_wide(char* out, std::uint64_t value) {
-  return std::to_chars(out, out + max_number_chars, value).ptr;
-}
-
-}  // namespace detail
-
-char* write_number(char* out, double value) {
+char* write_number(char* first, char* last, double value) {
+  require_room(first, last);
   if (!std::isfinite(value)) {
     throw std::invalid_argument("cannot write a non-finite number (NaN or infinity) to POV-Ray");
   }
   const double magnitude = std::fabs(value);
-  if (magnitude >= 1e-3 && magnitude < 1e7) return write_fixed(out, value, magnitude);
-  if (magnitude == 0.0) {
-    *out = '0';
-    return out + 1;
+  if (magnitude >= 1e-3 && magnitude < 1e7) {
+    // Every coordinate, radius and colour raintrace writes: 9 decimals in [1e-3, 1e-2), one
+    // fewer for each decade above, so that 7 significant digits remain.
+    int decimals = 9;
+    for (const double decade : kDecades) decimals -= magnitude >= decade ? 1 : 0;
+    return write_scaled(first, value < 0,
+                        rounded(magnitude * kScale[static_cast<std::size_t>(decimals)]), decimals);
   }
-  const auto result =
-      std::to_chars(out, out + max_number_chars, value, std::chars_format::general, 7);
-  return result.ptr;
+  if (magnitude == 0.0) {  // also -0: the bytes must not depend on the sign of a zero
+    *first = '0';
+    return first + 1;
+  }
+  return std::to_chars(first, last, value, std::chars_format::general, 7).ptr;
+}
+
+char* write_fixed5(char* first, char* last, double value) {
+  const double magnitude = std::fabs(value);
+  if (!(magnitude < 1e12)) return write_number(first, last, value);  // also NaN: refused there
+  require_room(first, last);
+  return write_scaled(first, value < 0, rounded(magnitude * 1e5), 5);  // in steps of 10 µm
+}
+
+char* write_index(char* first, char* last, std::uint64_t value) {
+  require_room(first, last);
+  return std::to_chars(first, last, value).ptr;
 }
 
 void append_number(std::string& text, double value) {
-  char buffer[max_number_chars];
-  char* end = write_number(buffer, value);
-  text.append(buffer, end);
+  char digits[kMaxNumberChars];
+  text.append(digits, write_number(digits, digits + kMaxNumberChars, value));
+}
+
+void append_fixed5(std::string& text, double value) {
+  char digits[kMaxNumberChars];
+  text.append(digits, write_fixed5(digits, digits + kMaxNumberChars, value));
+}
+
+void append_index(std::string& text, std::uint64_t value) {
+  char digits[kMaxNumberChars];
+  text.append(digits, write_index(digits, digits + kMaxNumberChars, value));
 }
 
 std::string format_number(double value) {

@@ -140,33 +140,39 @@ std::string read_file_bytes(const std::filesystem::path& path) {
 }
 
 std::string write_shared_files(const std::filesystem::path& out_dir, const ExportParams& look,
-                               int frame_count, const std::filesystem::path& scene_dir) {
+                               int frame_count, const std::filesystem::path& scene_dir,
+                               FrameSubset frames) {
   create_output_folders(out_dir);
   const int digits = frame_digits(frame_count);
   std::string all;  // every shared file's bytes in a fixed order, for the hash
-  auto emit = [&](const char* name, const std::string& bytes) {
+  // Writes `bytes` and hashes `hashed` (the same bytes, except for the .ini files' frame range).
+  auto emit = [&](const char* name, const std::string& bytes, const std::string& hashed) {
     write_file_atomic(out_dir / name, bytes);
     all += name;
     all += '\0';
-    all += bytes;
+    all += hashed;
   };
-  emit(kSceneInclude, scene_inc_text(look));
-  emit("scene.pov", dispatcher_text("frame", digits));
-  emit("scene.ini", ini_text(look, frame_count, "frame", "scene.pov"));
-  emit(kEnvironmentInclude, environment_text(look.environment, scene_dir));
-  emit(kMaterialsInclude, materials_template());
-  if (ground_applies(look)) emit(kGroundInclude, ground_template());
+  const FrameSubset whole{1, frame_count};
+  auto emit_same = [&](const char* name, const std::string& bytes) { emit(name, bytes, bytes); };
+  emit_same(kSceneInclude, scene_inc_text(look));
+  emit_same("scene.pov", dispatcher_text("frame", digits));
+  emit("scene.ini", ini_text(look, frame_count, "frame", "scene.pov", frames),
+       ini_text(look, frame_count, "frame", "scene.pov", whole));
+  emit_same(kEnvironmentInclude, environment_text(look.environment, scene_dir));
+  emit_same(kMaterialsInclude, materials_template());
+  if (ground_applies(look)) emit_same(kGroundInclude, ground_template());
   if (environment_plate_applies(look)) {
-    emit(kPlatePov, plate_pov_text());
-    emit(kPlateIni, plate_ini_text(look));
+    emit_same(kPlatePov, plate_pov_text());
+    emit_same(kPlateIni, plate_ini_text(look));
   } else {
     // Left by an earlier export into this folder: render/ takes plate.ini as asking for a plate.
     std::filesystem::remove(out_dir / kPlatePov);
     std::filesystem::remove(out_dir / kPlateIni);
   }
   if (look.mask) {
-    emit("mask.pov", dispatcher_text("mask", digits));
-    emit("mask.ini", ini_text(look, frame_count, "mask", "mask.pov"));
+    emit_same("mask.pov", dispatcher_text("mask", digits));
+    emit("mask.ini", ini_text(look, frame_count, "mask", "mask.pov", frames),
+         ini_text(look, frame_count, "mask", "mask.pov", whole));
   } else {
     std::filesystem::remove(out_dir / "mask.pov");
     std::filesystem::remove(out_dir / "mask.ini");

@@ -8,6 +8,7 @@
 
 #include "povgen/export_params.h"
 #include "povgen/frame_values.h"
+#include "povgen/scene_files.h"
 
 namespace raintrace::povgen {
 
@@ -21,10 +22,13 @@ void create_output_folders(const std::filesystem::path& out_dir);
 
 /// Writes everything frames share: scene.inc, scene.pov, scene.ini, environment.inc,
 /// raintrace_materials.inc, textures/streak_atlas.png, and mask.pov + mask.ini when
-/// look.mask. scene_dir resolves a user's environment include. Returns the hash of all of
-/// these files' bytes: a frame's input hash combines it with the frame's own text.
+/// look.mask. scene.ini and mask.ini render `frames` (the frames the folder holds). scene_dir
+/// resolves a user's environment include. Returns the hash of all of these files' bytes, the
+/// .ini files as they would read for the whole animation, so that a frame's input hash (which
+/// combines it with the frame's own text) does not depend on which other frames were exported.
 std::string write_shared_files(const std::filesystem::path& out_dir, const ExportParams& look,
-                               int frame_count, const std::filesystem::path& scene_dir);
+                               int frame_count, const std::filesystem::path& scene_dir,
+                               FrameSubset frames);
 
 /// Streams the frame's text into path (via path.tmp and a rename) with `threads` writer
 /// threads and returns content_hash(hash_prefix + text): the frame's input hash when

@@ -16,12 +16,13 @@
 #include "povgen/frame_values.h"
 #include "povgen/output_folder.h"
 #include "povgen/povray_test_support.h"
-#include "povgen/synthetic_rain.h"
+#include "povgen/test_support/synthetic_rain.h"
 
 namespace raintrace::povgen {
 namespace {
 
 namespace fs = std::filesystem;
+
 using testing::log_of;
 using testing::read_rgb;
 using testing::run_povray;
@@ -42,10 +43,11 @@ fs::path make_folder(const std::string& name, ExportParams look, int frames = 1,
                      std::size_t drops = 3000) {
   const fs::path dir = testing::scratch_folder("povray_test_" + name);
   fs::remove_all(dir);
-  write_shared_files(dir, look, frames, dir);
+  write_shared_files(dir, look, frames, dir, {1, frames});
   for (int n = 1; n <= frames; ++n) {
-    sim::Frame frame = synthetic_rain(drops, look.camera, double(look.width) / look.height, 12.0,
-                                      1.0, static_cast<std::uint64_t>(n));
+    sim::Frame frame =
+        test_support::synthetic_rain(drops, look.camera, double(look.width) / look.height, 12.0,
+                                     1.0, static_cast<std::uint64_t>(n));
     frame.index = n;
     frame.splashes.position = {{0.2f, 0.01f, 1.0f}};
     frame.splashes.velocity = {{0.0f, 1.0f, 0.0f}};

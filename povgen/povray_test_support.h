@@ -1,8 +1,8 @@
 // Helpers for povgen's tests that run the real POV-Ray (suites named PovRay*, ctest label
-// `povray`): skip without it, run it in a folder, read its images back as floats.
+// `povray`): skip without it, run it in a folder, read its images back as floats
+// (tests/support/pixels.h).
 #pragma once
 
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -10,9 +10,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
-#include <vector>
 
 #include "povgen/output_folder.h"
+#include "tests/support/pixels.h"
 
 namespace raintrace::povgen::testing {
 
@@ -41,15 +41,6 @@ inline std::string log_of(const std::filesystem::path& dir) {
   return read_file_bytes(dir / "povray.log").substr(0, 4000);
 }
 
-/// Decoded RGB pixels (PNG bytes differ between identical renders: compare pixels); EXR in
-/// scene-linear floats. Empty when the file cannot be read.
-inline std::vector<float> read_rgb(const std::filesystem::path& path) {
-  auto in = OIIO::ImageInput::open(path.string());
-  if (!in) return {};
-  const OIIO::ImageSpec& spec = in->spec();
-  std::vector<float> px(static_cast<std::size_t>(spec.width) * spec.height * 3);
-  in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, px.data());
-  return px;
-}
+using raintrace::test_support::read_rgb;
 
 }  // namespace raintrace::povgen::testing

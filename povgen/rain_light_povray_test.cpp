@@ -95,7 +95,7 @@ Renders render(const std::string& name, ExportParams look, const Environment& en
   write_file_atomic(dir / "environment_source.inc", environment_text(environment));
   look.environment.include_path = "environment_source.inc";
   look.rain_medium = false;  // only the streaks and drops are measured here
-  write_shared_files(dir, look, 1, dir);
+  write_shared_files(dir, look, 1, dir, {1, 1});
   write_file_atomic(dir / "frames" / "frame_0001.pov",
                     frame_text(build_frame_values(frame_of(drops), look)));
   write_file_atomic(dir / "frames" / "bare.pov", "#declare RT_Flash=0;\n#include \"scene.inc\"\n");

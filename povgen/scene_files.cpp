@@ -202,7 +202,7 @@ std::string dispatcher_text(const char* prefix, int digits) {
 }
 
 std::string ini_text(const ExportParams& look, int frame_count, const char* prefix,
-                     const char* dispatcher) {
+                     const char* dispatcher, FrameSubset frames) {
   validate(look);
   const std::string p{prefix};
   const std::string d{dispatcher};
@@ -210,6 +210,11 @@ std::string ini_text(const ExportParams& look, int frame_count, const char* pref
     throw std::invalid_argument("ini_text: unknown prefix/dispatcher " + p + "/" + d);
   }
   if (frame_count < 1) throw std::invalid_argument("ini_text: frame_count must be >= 1");
+  if (frames.first < 1 || frames.last < frames.first || frames.last > frame_count) {
+    throw std::invalid_argument("ini_text: frames " + std::to_string(frames.first) + "-" +
+                                std::to_string(frames.last) + " are not in 1-" +
+                                std::to_string(frame_count));
+  }
   const int digits = frame_digits(frame_count);
   const std::string last_frame(static_cast<std::size_t>(digits), '9');
   const bool final_quality = look.quality == Quality::final && p == "frame";
@@ -246,7 +251,8 @@ std::string ini_text(const ExportParams& look, int frame_count, const char* pref
   text += "Width=" + std::to_string(look.width) + "\nHeight=" + std::to_string(look.height) + "\n";
   text += "Library_Path=.\n";
   text += "Initial_Frame=1\nFinal_Frame=" + last_frame + "\n";
-  text += "Subset_Start_Frame=1\nSubset_End_Frame=" + std::to_string(frame_count) + "\n";
+  text += "Subset_Start_Frame=" + std::to_string(frames.first) +
+          "\nSubset_End_Frame=" + std::to_string(frames.last) + "\n";
   text += "Cyclic_Animation=off\n";
   // Quality 9 in both modes: lower levels drop refraction (5) or media (8), which are the rain.
   text += "Quality=9\n";

@@ -40,11 +40,18 @@ std::string plate_ini_text(const ExportParams& look);
 /// or "mask"; digits from frame_digits()).
 std::string dispatcher_text(const char* prefix, int digits);
 
+/// Frames first..last (1-based, inclusive) of an animation.
+struct FrameSubset {
+  int first = 1;
+  int last = 1;
+};
+
 /// scene.ini (prefix "frame", dispatcher "scene.pov") or mask.ini ("mask", "mask.pov"):
-/// renders frames 1..frame_count from inside the folder into images/frame_NNNN.exr (half-float
-/// OpenEXR, scene-linear: raintrace develops each into images/frame_NNNN.png) or
-/// images/mask_NNNN.png.
+/// renders frames `frames` of a frame_count-frame animation from inside the folder into
+/// images/frame_NNNN.exr (half-float OpenEXR, scene-linear: raintrace develops each into
+/// images/frame_NNNN.png) or images/mask_NNNN.png. Throws std::invalid_argument unless
+/// 1 <= first <= last <= frame_count.
 std::string ini_text(const ExportParams& look, int frame_count, const char* prefix,
-                     const char* dispatcher);
+                     const char* dispatcher, FrameSubset frames);
 
 }  // namespace raintrace::povgen

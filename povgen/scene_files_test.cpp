@@ -3,9 +3,12 @@
 #include "povgen/scene_files.h"
 
 #include <gtest/gtest.h>
+#include <filesystem>
 #include <limits>
 #include <stdexcept>
 #include <string>
+
+#include "povgen/output_folder.h"
 
 namespace raintrace::povgen {
 namespace {
@@ -17,24 +20,48 @@ bool contains(const std::string& text, const std::string& part) {
 TEST(SceneFiles, IniPadsFrameNumbersToFourDigitsWhateverTheCount) {
   // POV-Ray pads output numbers to Final_Frame's digits: 48 frames would give frame_01.png.
   ExportParams look;
-  const std::string ini = ini_text(look, 48, "frame", "scene.pov");
+  const std::string ini = ini_text(look, 48, "frame", "scene.pov", {1, 48});
   EXPECT_TRUE(contains(ini, "\nInput_File_Name=scene.pov\n"));
   EXPECT_TRUE(contains(ini, "\nOutput_File_Name=images/frame_\n"));
   EXPECT_TRUE(contains(ini, "\nInitial_Frame=1\nFinal_Frame=9999\n"));
   EXPECT_TRUE(contains(ini, "\nSubset_Start_Frame=1\nSubset_End_Frame=48\n"));
   EXPECT_TRUE(contains(ini, "\nLibrary_Path=.\n"));
   EXPECT_TRUE(contains(ini, "\nWidth=640\nHeight=360\n"));
-  const std::string big = ini_text(look, 12000, "frame", "scene.pov");
+  const std::string big = ini_text(look, 12000, "frame", "scene.pov", {1, 12000});
   EXPECT_TRUE(contains(big, "\nFinal_Frame=99999\n"));
   EXPECT_TRUE(contains(dispatcher_text("frame", 5), "str(frame_number, -5, 0)"));
 }
 
+TEST(SceneFiles, IniRendersTheFramesItIsGiven) {
+  // A folder exported with --frames 3-5 holds only those: scene.ini must not ask for others.
+  const std::string ini = ini_text(ExportParams{}, 48, "frame", "scene.pov", {3, 5});
+  EXPECT_TRUE(contains(ini, "\nInitial_Frame=1\nFinal_Frame=9999\n"));
+  EXPECT_TRUE(contains(ini, "\nSubset_Start_Frame=3\nSubset_End_Frame=5\n"));
+  for (const FrameSubset bad : {FrameSubset{0, 2}, FrameSubset{5, 3}, FrameSubset{40, 49}}) {
+    EXPECT_THROW(ini_text(ExportParams{}, 48, "frame", "scene.pov", bad), std::invalid_argument)
+        << bad.first << "-" << bad.last;
+  }
+}
+
+TEST(SceneFiles, TheSharedFilesHashDoesNotDependOnWhichFramesSceneIniRenders) {
+  // Exporting frames 1-2 and then 3-4 into one folder must not make frames 1-2 look changed.
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(::testing::TempDir()) / "raintrace_shared_files_hash";
+  fs::remove_all(dir);
+  const ExportParams look;
+  const std::string first = write_shared_files(dir / "a", look, 48, dir, {1, 2});
+  const std::string second = write_shared_files(dir / "b", look, 48, dir, {3, 4});
+  EXPECT_EQ(first, second);
+  EXPECT_TRUE(contains(read_file_bytes(dir / "b" / "scene.ini"), "\nSubset_Start_Frame=3\n"));
+  fs::remove_all(dir);
+}
+
 TEST(SceneFiles, FramesAreRenderedAsOpenExrAndMasksAsPng) {
   ExportParams look;
-  const std::string frames = ini_text(look, 4, "frame", "scene.pov");
+  const std::string frames = ini_text(look, 4, "frame", "scene.pov", {1, 4});
   EXPECT_TRUE(contains(frames, "\nOutput_File_Type=E\n"));          // scene-linear half float
   EXPECT_TRUE(contains(frames, "oiiotool images/frame_0001.exr"));  // how to look without us
-  EXPECT_TRUE(contains(ini_text(look, 4, "mask", "mask.pov"), "\nOutput_File_Type=N\n"));
+  EXPECT_TRUE(contains(ini_text(look, 4, "mask", "mask.pov", {1, 4}), "\nOutput_File_Type=N\n"));
   // Develop settings are not in any file POV-Ray reads: editing them re-renders nothing.
   EXPECT_FALSE(contains(frames, "exposure_ev ="));
 }
@@ -42,13 +69,13 @@ TEST(SceneFiles, FramesAreRenderedAsOpenExrAndMasksAsPng) {
 TEST(SceneFiles, QualityPicksAntialiasing) {
   ExportParams look;
   look.quality = Quality::preview;
-  EXPECT_TRUE(contains(ini_text(look, 1, "frame", "scene.pov"), "\nAntialias=off\n"));
+  EXPECT_TRUE(contains(ini_text(look, 1, "frame", "scene.pov", {1, 1}), "\nAntialias=off\n"));
   look.quality = Quality::final;
-  const std::string final_ini = ini_text(look, 1, "frame", "scene.pov");
+  const std::string final_ini = ini_text(look, 1, "frame", "scene.pov", {1, 1});
   EXPECT_TRUE(contains(final_ini, "\nAntialias=on\nSampling_Method=1\n"));
   EXPECT_TRUE(contains(final_ini, "\nJitter=off\n"));  // repeatable across runs and threads
   // Masks stay crisp: coverage, not antialiased edges.
-  EXPECT_TRUE(contains(ini_text(look, 1, "mask", "mask.pov"), "\nAntialias=off\n"));
+  EXPECT_TRUE(contains(ini_text(look, 1, "mask", "mask.pov", {1, 1}), "\nAntialias=off\n"));
 }
 
 TEST(SceneFiles, SceneIncDeclaresRtPreviewPerQuality) {
@@ -76,7 +103,7 @@ TEST(SceneFiles, DispatcherIncludesTheFrameByNumber) {
             "#version 3.7;\n#include concat(\"frames/frame_\", str(frame_number, -4, 0), "
             "\".pov\")\n");
   EXPECT_THROW(dispatcher_text("x\"#system", 4), std::invalid_argument);
-  EXPECT_THROW(ini_text(ExportParams{}, 1, "frame", "evil.pov"), std::invalid_argument);
+  EXPECT_THROW(ini_text(ExportParams{}, 1, "frame", "evil.pov", {1, 1}), std::invalid_argument);
 }
 
 TEST(SceneFiles, SceneIncHasTheCameraAndMaterials) {
@@ -161,7 +188,7 @@ TEST(SceneFiles, EnvironmentPlateOnlyWhereItStandsInFaithfully) {
   EXPECT_TRUE(contains(inc, "image_map{exr \"textures/environment_plate.exr\" once}"));
   EXPECT_TRUE(contains(inc, "RT_Flash<=0 & !RT_Bolts"));
   EXPECT_TRUE(contains(inc, "max_extent(RT_Plate).x=image_width"));
-  EXPECT_TRUE(contains(ini_text(look, 2, "frame", "scene.pov"), "povray plate.ini"));
+  EXPECT_TRUE(contains(ini_text(look, 2, "frame", "scene.pov", {1, 2}), "povray plate.ini"));
   look.environment.name = "field";
   EXPECT_TRUE(environment_plate_applies(look));
 
@@ -213,7 +240,7 @@ TEST(SceneFiles, RangesAreTheSceneFormatsOwn) {
   }
   look = ExportParams{};
   look.fps = 300;
-  EXPECT_THROW(ini_text(look, 48, "frame", "scene.pov"), std::invalid_argument);
+  EXPECT_THROW(ini_text(look, 48, "frame", "scene.pov", {1, 48}), std::invalid_argument);
   look = ExportParams{};
   look.fog.mode = static_cast<FogMode>(9);
   EXPECT_THROW(scene_inc_text(look), std::invalid_argument);

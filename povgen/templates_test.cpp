@@ -3,12 +3,13 @@
 
 #include <gtest/gtest.h>
 #include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "povgen/output_folder.h"
 
 namespace raintrace::povgen {
 namespace {
@@ -34,12 +35,11 @@ class UserInclude : public ::testing::Test {
 
 TEST(Templates, BuiltinsAreEmbeddedAndMatchTheSourceFiles) {
   for (const std::string& name : builtin_environments()) {
-    std::ifstream in(fs::path{RAINTRACE_TEMPLATES_DIR} / (name + ".inc"), std::ios::binary);
-    const std::string file{std::istreambuf_iterator<char>(in), {}};
+    const std::string file = read_file_bytes(fs::path{RAINTRACE_TEMPLATES_DIR} / (name + ".inc"));
     EXPECT_EQ(environment_template(name), file) << name << ": re-run CMake after editing";
   }
-  std::ifstream in(fs::path{RAINTRACE_TEMPLATES_DIR} / "raintrace_materials.inc");
-  EXPECT_EQ(materials_template(), std::string(std::istreambuf_iterator<char>(in), {}));
+  EXPECT_EQ(materials_template(),
+            read_file_bytes(fs::path{RAINTRACE_TEMPLATES_DIR} / "raintrace_materials.inc"));
   EXPECT_NE(materials_template().find("#declare RT_DropMaterial"), std::string::npos);
 }
 

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <numbers>
 #include <stdexcept>
 
 namespace raintrace::povgen {
@@ -22,8 +23,7 @@ ViewFrustum::ViewFrustum(const sim::Camera& camera, double aspect) {
   if (std::fabs(glm::dot(sky, m_forward)) > 0.9999f) sky = {0.0f, 0.0f, 1.0f};
   m_right = glm::normalize(glm::cross(sky, m_forward));  // left-handed: y × z = x
   m_up = glm::cross(m_forward, m_right);
-  m_tan_half_x =
-      static_cast<float>(std::tan(camera.fov_deg * 0.5 * 3.14159265358979323846 / 180.0));
+  m_tan_half_x = static_cast<float>(std::tan(camera.fov_deg * 0.5 * std::numbers::pi / 180.0));
   const float tan_half_y = m_tan_half_x / static_cast<float>(aspect);
   // A point is inside the left plane when x ≥ −z·tx, i.e. dot(p, right + tx·forward) ≥ 0.
   m_normals[0] = glm::normalize(m_right + m_tan_half_x * m_forward);

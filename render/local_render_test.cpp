@@ -148,7 +148,7 @@ TEST_F(PovrayLocalRender, AFrameThatFailsIsReportedWithPovrayErrorAndTheOthersFi
     ASSERT_EQ(summary.failures.size(), 1U) << "max_span " << max_span;
     const auto& failure = summary.failures[0];
     EXPECT_EQ(failure.frame, 3);
-    EXPECT_EQ(failure.exit_code, 1);  // POV-Ray exits 1 on a parse error (POVRAY-NOTES)
+    EXPECT_EQ(failure.exit_code, 1);  // POV-Ray exits 1 on a parse error (docs/povray-notes.md)
     ASSERT_FALSE(failure.error_lines.empty());
     EXPECT_EQ(failure.error_lines[0].rfind("File 'frames/frame_0003.pov' line 2: Parse Error", 0),
               0U)

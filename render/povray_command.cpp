@@ -1,4 +1,4 @@
-// POV-Ray command lines and log reading. Facts behind the flags are in shared/POVRAY-NOTES.md.
+// POV-Ray command lines and log reading. Facts behind the flags are in docs/povray-notes.md.
 #include "render/povray_command.h"
 
 #include <fmt/core.h>

@@ -32,9 +32,9 @@ std::string temp_dir_name();
 ///   povray scene.ini -D +FE -V -GR +L. +Oimages/.tmp/frame_.exr +KFI1 +KFF9999 +SFa +EFb
 ///   povray mask.ini -D +FN -V -GR +L. +Oimages/.tmp/mask_.png …
 /// +FE: half-float OpenEXR, scene-linear (as scene.ini says); masks stay PNG (data, not light).
-/// -D: headless; -V -GR: quiet but keeps POV-Ray's "File '…' line N:" error lines (POVRAY-NOTES);
-/// +KFI1 +KFF9999 (as many nines as `digits`) keep frame_number and the zero-padded names
-/// identical to the ini's whole animation.
+/// -D: headless; -V -GR: quiet but keeps POV-Ray's "File '…' line N:" error lines
+/// (docs/povray-notes.md); +KFI1 +KFF9999 (as many nines as `digits`) keep frame_number and the
+/// zero-padded names identical to the ini's whole animation.
 std::vector<std::string> povray_argv(Pass pass, const FrameSpan& span, int digits = 4);
 
 /// Where POV-Ray writes the environment plate first ("images/.tmp/environment_plate.exr").

@@ -202,7 +202,8 @@ std::string sbatch_script(const std::filesystem::path& out_dir,
 }
 
 RenderSummary render_slurm(FolderState& folder, const SlurmRenderSettings& settings) {
-  const auto& out_dir = folder.dir();
+  // Absolute: sbatch runs inside the folder, where a relative path (-o out/x) means nothing.
+  const auto out_dir = std::filesystem::absolute(folder.dir()).lexically_normal();
   if (!find_program("sbatch") || !find_program("squeue")) {
     throw std::runtime_error(
         "Slurm not found (sbatch/squeue): install slurm-client or use --backend local");

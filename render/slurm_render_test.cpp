@@ -51,40 +51,43 @@ TEST(ShareFrames, SplitsIntoNearlyEqualContiguousShares) {
 }
 
 TEST(SbatchScript, IsAnArrayRunningTheWorkerInTheOutputFolder) {
-  const auto script = sbatch_script("/shared/out", "/opt/raintrace", 6);
+  const auto script = sbatch_script("/cluster/out", "/opt/raintrace", 6);
   EXPECT_NE(script.find("#SBATCH --array=0-5\n"), std::string::npos);
-  EXPECT_NE(script.find("#SBATCH --chdir=/shared/out\n"), std::string::npos);
-  EXPECT_NE(script.find("#SBATCH --output=/shared/out/logs/slurm_%A_%a.out\n"), std::string::npos);
-  EXPECT_NE(script.find("exec '/opt/raintrace' render --slurm-task '/shared/out'\n"),
+  EXPECT_NE(script.find("#SBATCH --chdir=/cluster/out\n"), std::string::npos);
+  EXPECT_NE(script.find("#SBATCH --output=/cluster/out/logs/slurm_%A_%a.out\n"), std::string::npos);
+  EXPECT_NE(script.find("exec '/opt/raintrace' render --slurm-task '/cluster/out'\n"),
             std::string::npos);
 }
 
-// Uses a running cluster, or (as root) starts a one-node one with the recipe and stops it after.
+// Uses a running cluster, or (as root) starts a one-node one with the repository's own recipe,
+// scripts/slurm-localhost.sh, and stops it after. That cluster is configured by SLURM_CONF,
+// which sbatch and squeue, run by render_slurm(), inherit from this process.
 class SlurmRender : public ::testing::Test {
  protected:
+  static std::filesystem::path recipe() {
+    return std::filesystem::path{RAINTRACE_SOURCE_DIR} / "scripts" / "slurm-localhost.sh";
+  }
   static void SetUpTestSuite() {
     if (!find_program("sbatch") || !find_program("sinfo")) return;
     if (cluster_up()) {
       s_ready = true;
       return;
     }
-    const char* recipe_env = std::getenv("RAINTRACE_SLURM_RECIPE");
-    const std::filesystem::path recipe =
-        recipe_env != nullptr ? recipe_env : "/work/shared/recipes/slurm-localhost.sh";
-    if (::geteuid() != 0 || !std::filesystem::exists(recipe)) return;
+    if (::geteuid() != 0) return;
     s_cluster_dir = testing::fresh_test_dir("slurm_cluster");
     ProcessSpec start;
-    start.argv = {recipe.string(), "start", s_cluster_dir.string()};
+    start.argv = {recipe().string(), "start", s_cluster_dir.string()};
     start.log_path = s_cluster_dir.string() + ".log";
     s_started = ChildProcess{start}.wait() == 0;
+    if (s_started) ::setenv("SLURM_CONF", (s_cluster_dir / "slurm.conf").c_str(), 1);
     s_ready = s_started && cluster_up();
   }
   static void TearDownTestSuite() {
     if (!s_started) return;
     ProcessSpec stop;
-    stop.argv = {"/work/shared/recipes/slurm-localhost.sh", "stop", s_cluster_dir.string()};
-    if (const char* r = std::getenv("RAINTRACE_SLURM_RECIPE")) stop.argv[0] = r;
+    stop.argv = {recipe().string(), "stop", s_cluster_dir.string()};
     ChildProcess{stop}.wait();
+    ::unsetenv("SLURM_CONF");
   }
   static bool cluster_up() {
     ProcessSpec spec;
@@ -96,7 +99,7 @@ class SlurmRender : public ::testing::Test {
     if (!find_program("povray")) GTEST_SKIP() << "POV-Ray not installed (apt-get install povray)";
     if (!s_ready) {
       GTEST_SKIP() << "no Slurm cluster: needs sbatch/sinfo and an idle node, or root to start "
-                      "one with shared/recipes/slurm-localhost.sh";
+                      "one with scripts/slurm-localhost.sh";
     }
   }
   static inline bool s_ready = false;
@@ -125,7 +128,7 @@ TEST_F(SlurmRender, JobArrayRendersTheSamePixelsAsLocal) {
   for (const auto& f : manifest.frames) {
     EXPECT_EQ(f.image.status, output::FrameStatus::rendered);
     EXPECT_EQ(f.image.rendered_hash, f.input_hash);
-    // PNG bytes differ by timestamps (POVRAY-NOTES): compare decoded pixels exactly.
+    // PNG bytes differ by timestamps (docs/povray-notes.md): compare decoded pixels exactly.
     OIIO::ImageBuf a{(dir / "local" / f.image.path).string()};
     OIIO::ImageBuf b{(dir / "slurm" / f.image.path).string()};
     const auto cmp = OIIO::ImageBufAlgo::compare(a, b, 0.0f, 0.0f);

@@ -11,8 +11,8 @@
 namespace raintrace::render {
 
 /// Cuts ascending frame numbers into contiguous spans. Each POV-Ray start costs ~0.7 s
-/// (POVRAY-NOTES), so spans are long, but short enough that `jobs` processes all get work and
-/// finish together: about two spans per job, each at most max_span frames, at least 1.
+/// (docs/povray-notes.md), so spans are long, but short enough that `jobs` processes all get work
+/// and finish together: about two spans per job, each at most max_span frames, at least 1.
 std::vector<FrameSpan> split_into_spans(const std::vector<int>& frames, int jobs, int max_span);
 
 /// Span length while frames still arrive (render_local with a FrameFeed): the length

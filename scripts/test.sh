@@ -12,8 +12,8 @@ step() { printf '\n== %s (%s)\n' "$1" "$(date -u +%H:%M:%S)"; }
 step "dependencies"
 "$root/scripts/install-deps.sh" --test
 
-step "build"
-"$root/scripts/build.sh" "$root/build"
+step "build (warnings are errors)"
+"$root/scripts/build.sh" "$root/build" -DRAINTRACE_WERROR=ON
 
 step "tests"
 (cd "$root/build" && ctest --output-on-failure -j "$jobs" --timeout 900)

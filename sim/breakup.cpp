@@ -11,7 +11,9 @@
 namespace raintrace::sim {
 namespace {
 constexpr int kMaxFragments = 16;
-}
+/// Sideways speed at which the fragments of a breaking drop fly apart, m/s.
+constexpr float kFragmentSpeed_m_per_s = 0.3f;
+}  // namespace
 
 std::size_t break_up(DropState& state, std::size_t i, double breakup_diameter_m,
                      std::uint64_t& next_id, std::uint64_t seed) {
@@ -37,12 +39,12 @@ std::size_t break_up(DropState& state, std::size_t i, double breakup_diameter_m,
     const auto dk = static_cast<float>(std::cbrt(volume * weight[k] / total));
     const double az = 2.0 * std::numbers::pi * uniform(seed, Stream::breakup, parent, k * 8 + 1);
     const glm::vec3 dir{static_cast<float>(std::cos(az)), 0.0f, static_cast<float>(std::sin(az))};
-    // Fragments fly apart sideways at ~0.3 m/s, starting a parent diameter apart.
+    // Fragments fly apart sideways at kFragmentSpeed, starting a parent diameter apart.
     const glm::vec3 offset = dir * static_cast<float>(d) * static_cast<float>(k > 0 ? 1 : 0);
     if (k == 0) {
       state.drops.diameter[i] = dk;
       state.drops.age[i] = 0.0f;
-      state.drops.velocity[i] += dir * 0.3f;
+      state.drops.velocity[i] += dir * kFragmentSpeed_m_per_s;
       state.refresh_drag(i);
       continue;
     }
@@ -50,7 +52,7 @@ std::size_t break_up(DropState& state, std::size_t i, double breakup_diameter_m,
     f.id = next_id++;
     f.diameter = dk;
     f.position = base.position + offset;
-    f.velocity = base.velocity + dir * 0.3f;
+    f.velocity = base.velocity + dir * kFragmentSpeed_m_per_s;
     f.age = 0.0f;
     state.push(f);
   }

@@ -25,34 +25,12 @@ struct Block {
   std::array<std::uint8_t, kBlock> event;
 };
 
-// Per-drop wind of the block (uniform part + turbulence at the drop) into b.wx/wy/wz; the same
-// arithmetic as Wind::turbulence_at.
+// Per-drop wind of the block (turbulence at the drop, then the uniform part) into b.wx/wy/wz.
 void turbulence_block(const Wind& wind, const StepConstants& c, std::size_t n, Block& b) {
-  const Wind::Modes& modes = wind.modes();
-  const glm::vec3 shift(modes.drift * c.time_s);
-  const float sx = shift.x, sy = shift.y, sz = shift.z;
-  float* __restrict wx = b.wx.data();
-  float* __restrict wy = b.wy.data();
-  float* __restrict wz = b.wz.data();
-  const float* __restrict px = b.px.data();
-  const float* __restrict py = b.py.data();
-  const float* __restrict pz = b.pz.data();
-  float* __restrict sn = b.sin.data();
-  std::fill_n(wx, n, 0.0f);
-  std::fill_n(wy, n, 0.0f);
-  std::fill_n(wz, n, 0.0f);
-  for (int m = 0; m < Wind::kModes; ++m) {
-    const float kx = modes.k[m].x, ky = modes.k[m].y, kz = modes.k[m].z, ph = modes.phase[m];
-    const float ax = modes.amp[m].x, ay = modes.amp[m].y, az = modes.amp[m].z;
-    for (std::size_t i = 0; i < n; ++i) {
-      sn[i] = sin_approx(kx * (px[i] - sx) + ky * (py[i] - sy) + kz * (pz[i] - sz) + ph);
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-      wx[i] += ax * sn[i], wy[i] += ay * sn[i], wz[i] += az * sn[i];
-    }
-  }
+  turbulence_of(wind.modes(), c.time_s, n, b.px.data(), b.py.data(), b.pz.data(), b.wx.data(),
+                b.wy.data(), b.wz.data(), b.sin.data());
   const float cwx = c.wind.x, cwy = c.wind.y, cwz = c.wind.z;
-  for (std::size_t i = 0; i < n; ++i) wx[i] += cwx, wy[i] += cwy, wz[i] += cwz;
+  for (std::size_t i = 0; i < n; ++i) b.wx[i] += cwx, b.wy[i] += cwy, b.wz[i] += cwz;
 }
 
 // One block of drops [begin, begin + n). b.wx/wy/wz hold the per-drop wind when kTurbulent,

@@ -12,7 +12,7 @@ namespace raintrace::sim {
 double gust_function(double t) {
   constexpr double pi = std::numbers::pi;
   return std::cos(pi * t) * std::cos(3 * pi * t) * std::cos(5 * pi * t) * std::cos(7 * pi * t) *
-         -0.1 * std::sin(25 * pi * t);
+         -kGustPeak * std::sin(25 * pi * t);
 }
 
 Wind::Wind(const WindParams& params, std::uint64_t seed)
@@ -51,14 +51,9 @@ glm::dvec3 Wind::uniform_at(double t_s) const {
 
 glm::vec3 Wind::turbulence_at(const glm::vec3& p, double t_s) const {
   if (!m_turbulence) return glm::vec3{0.0f};
-  // Frozen turbulence advected by the steady wind.
-  // Same arithmetic as the integrator's block loop, so both see the same field.
-  const glm::vec3 q = p - glm::vec3(m_modes.drift * t_s);
   glm::vec3 w{0.0f};
-  for (int m = 0; m < kModes; ++m) {
-    const glm::vec3& k = m_modes.k[m];
-    w += m_modes.amp[m] * sin_approx(k.x * q.x + k.y * q.y + k.z * q.z + m_modes.phase[m]);
-  }
+  float scratch = 0.0f;
+  turbulence_of(m_modes, t_s, 1, &p.x, &p.y, &p.z, &w.x, &w.y, &w.z, &scratch);
   return w;
 }
 
@@ -69,7 +64,7 @@ glm::vec3 Wind::at(const glm::vec3& p, double t_s) const {
 double Wind::max_horizontal_speed() const {
   const glm::dvec3 v = m_params.velocity_m_per_s;
   double s = std::hypot(v.x, v.z);
-  if (m_params.gusts) s += 0.1 * m_params.gust_strength;
+  if (m_params.gusts) s += kGustPeak * m_params.gust_strength;
   if (m_turbulence) s += m_params.turbulence_m_per_s * std::sqrt(2.0 * kModes);
   return s;
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <glm/vec3.hpp>
 
@@ -32,8 +33,11 @@ inline float sin_approx(float x) {
   return (n & 1) != 0 ? -p : p;
 }
 
-/// The paper's eq. 5: w(t) = cos(πt)·cos(3πt)·cos(5πt)·cos(7πt)·(−0.1)·sin(25πt), t in s.
-/// Dimensionless, |w| <= 0.1, periodic with period 2 s (every factor repeats after 2 s).
+/// The peak of the paper's gust function: |w(t)| <= kGustPeak.
+inline constexpr double kGustPeak = 0.1;
+
+/// The paper's eq. 5: w(t) = cos(πt)·cos(3πt)·cos(5πt)·cos(7πt)·(−kGustPeak)·sin(25πt), t in s.
+/// Dimensionless, periodic with period 2 s (every factor repeats after 2 s).
 double gust_function(double t_s);
 
 /// The period of gust_function() as printed, s.
@@ -58,7 +62,8 @@ class Wind {
   [[nodiscard]] glm::dvec3 uniform_at(double t_s) const;
   /// Full wind at a point, m/s (uniform part + turbulence).
   [[nodiscard]] glm::vec3 at(const glm::vec3& p, double t_s) const;
-  /// Turbulence alone at a point; the integrator adds it only when has_turbulence().
+  /// Turbulence alone at a point (turbulence_of() for one point); the integrator adds it, for
+  /// a block of drops at once, only when has_turbulence().
   [[nodiscard]] glm::vec3 turbulence_at(const glm::vec3& p, double t_s) const;
   [[nodiscard]] bool has_turbulence() const { return m_turbulence; }
   [[nodiscard]] const Modes& modes() const { return m_modes; }
@@ -74,5 +79,29 @@ class Wind {
   bool m_turbulence = false;
   Modes m_modes;
 };
+
+/// The turbulence of `modes` at time t_s at n points (px, py, pz), into (wx, wy, wz): the
+/// frozen field T(p, t) = Σ amp·sin(k·(p − drift·t) + phase). The one place its arithmetic is
+/// written, so Wind::turbulence_at and the integrator's blocks of drops (integrator.cpp, built
+/// with -O3 so these plain loops vectorise) see the same field bit for bit. `scratch` holds n
+/// floats.
+inline void turbulence_of(const Wind::Modes& modes, double t_s, std::size_t n,
+                          const float* __restrict px, const float* __restrict py,
+                          const float* __restrict pz, float* __restrict wx, float* __restrict wy,
+                          float* __restrict wz, float* __restrict scratch) {
+  const glm::vec3 shift(modes.drift * t_s);
+  for (std::size_t i = 0; i < n; ++i) wx[i] = wy[i] = wz[i] = 0.0f;
+  for (int m = 0; m < Wind::kModes; ++m) {
+    const float kx = modes.k[m].x, ky = modes.k[m].y, kz = modes.k[m].z, ph = modes.phase[m];
+    const float ax = modes.amp[m].x, ay = modes.amp[m].y, az = modes.amp[m].z;
+    for (std::size_t i = 0; i < n; ++i) {
+      scratch[i] =
+          sin_approx(kx * (px[i] - shift.x) + ky * (py[i] - shift.y) + kz * (pz[i] - shift.z) + ph);
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      wx[i] += ax * scratch[i], wy[i] += ay * scratch[i], wz[i] += az * scratch[i];
+    }
+  }
+}
 
 }  // namespace raintrace::sim

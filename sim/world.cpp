@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -27,9 +29,11 @@ constexpr double kMergeInterval_s = 0.04;
 // A drop fainter than this can no longer be seen (1/255 of full opacity).
 constexpr float kMinOpacity = 1.0f / 255.0f;
 
-Wind make_wind(const SimParams& p) {
-  validate(p);  // first member initialised from params: validate before anything uses them
-  return Wind(p.wind, p.seed);
+/// params, once validated: World's first member is initialised from it, so nothing uses a
+/// value before it has been checked.
+const SimParams& validated(const SimParams& params) {
+  validate(params);
+  return params;
 }
 
 // How far beyond the steady wind drops may drift sideways, as a speed, m/s. Gusts and
@@ -37,7 +41,7 @@ Wind make_wind(const SimParams& p) {
 // peak; a quarter of the gust peak and half the turbulence RMS cover it (more would multiply
 // the drops simulated out of view for nothing).
 double wind_spread(const WindParams& w) {
-  return (w.gusts ? 0.25 * 0.1 * w.gust_strength : 0.0) + 0.5 * w.turbulence_m_per_s;
+  return (w.gusts ? 0.25 * kGustPeak * w.gust_strength : 0.0) + 0.5 * w.turbulence_m_per_s;
 }
 
 /// How long after an impact something of it still shows: splash droplets fly up to
@@ -73,10 +77,10 @@ ImpactInput impact_input(const GroundImpact& impact) {
 }  // namespace
 
 World::World(const SimParams& params, const std::atomic<bool>* cancel)
-    : m_params(params),
+    : m_params(validated(params)),
       m_cancel(cancel),
-      m_view((validate(params), params.camera), params.rain.near_m, params.rain.far_m),
-      m_wind(make_wind(params)),
+      m_view(params.camera, params.rain.near_m, params.rain.far_m),
+      m_wind(params.wind, params.seed),
       m_sizes(params.rain),
       m_region(m_view, params.ground_y_m, params.rain.ceiling_margin_m,
                glm::dvec3{params.wind.velocity_m_per_s.x, 0.0, params.wind.velocity_m_per_s.z},
@@ -129,6 +133,22 @@ void World::check_cancel() const {
   if (m_cancel != nullptr && m_cancel->load(std::memory_order_relaxed)) throw Cancelled{};
 }
 
+std::optional<NewDrop> World::new_drop(std::uint64_t id, double across, double along, double y,
+                                       double diameter, double terminal_speed,
+                                       const glm::dvec3& wind) const {
+  const double a = m_region.a0() + across * (m_region.a1() - m_region.a0());
+  const double b = m_region.b0() + along * (m_region.b1() - m_region.b0());
+  if (!m_region.reaches_footprint(a, b, y, terminal_speed)) return std::nullopt;
+  NewDrop drop;
+  drop.id = id;
+  drop.position = glm::vec3(m_region.point(a, b, y));
+  drop.velocity = glm::vec3(wind.x, -terminal_speed, wind.z);
+  drop.diameter = static_cast<float>(diameter);
+  drop.vanishing_rate = static_cast<float>(m_params.rain.vanishing_rate_per_s);
+  drop.colour = glm::vec3(m_params.rain.colour);
+  return drop;
+}
+
 int World::thread_count() const {
   if (m_params.threads > 0) return m_params.threads;
   return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -151,21 +171,13 @@ void World::fill() {
     const double d = m_sizes.sample_in_air(u(0));
     const double vt = terminal_velocity(d);
     const double y = m_region.ground() + u(3) * (m_region.ceiling() - m_region.ground());
-    const double a = m_region.a0() + u(1) * (m_region.a1() - m_region.a0());
-    const double b = m_region.b0() + u(2) * (m_region.b1() - m_region.b0());
-    // Drawn (so ids and the rest of the fill do not depend on it), but not simulated.
-    if (!m_region.reaches_footprint(a, b, y, vt)) continue;
-    NewDrop drop;
-    drop.id = id;
-    drop.position = glm::vec3(m_region.point(a, b, y));
-    drop.velocity = glm::vec3(wind.x, -vt, wind.z);
-    drop.diameter = static_cast<float>(d);
+    // Drawn (so ids and the rest of the fill do not depend on it), but maybe not simulated.
+    std::optional<NewDrop> drop = new_drop(id, u(1), u(2), y, d, vt, wind);
+    if (!drop) continue;
     // As if it had fallen from the ceiling at terminal velocity.
-    drop.age = static_cast<float>((m_region.ceiling() - y) / vt);
-    drop.vanishing_rate = rate;
-    drop.opacity = std::exp(-rate * drop.age);
-    drop.colour = glm::vec3(m_params.rain.colour);
-    m_state.push(drop);
+    drop->age = static_cast<float>((m_region.ceiling() - y) / vt);
+    drop->opacity = std::exp(-rate * drop->age);
+    m_state.push(*drop);
   }
 }
 
@@ -184,17 +196,9 @@ void World::spawn(double t_s) {
     const double vt = terminal_velocity(d);
     // Born somewhere within this substep's fall below the ceiling, so that no layers form.
     const double y = m_region.ceiling() - u(3) * vt * dt;
-    const double a = m_region.a0() + u(1) * (m_region.a1() - m_region.a0());
-    const double b = m_region.b0() + u(2) * (m_region.b1() - m_region.b0());
-    if (!m_region.reaches_footprint(a, b, y, vt)) continue;
-    NewDrop drop;
-    drop.id = id;
-    drop.position = glm::vec3(m_region.point(a, b, y));
-    drop.velocity = glm::vec3(wind.x, -vt, wind.z);
-    drop.diameter = static_cast<float>(d);
-    drop.vanishing_rate = static_cast<float>(m_params.rain.vanishing_rate_per_s);
-    drop.colour = glm::vec3(m_params.rain.colour);
-    m_state.push(drop);
+    std::optional<NewDrop> drop = new_drop(id, u(1), u(2), y, d, vt, wind);
+    if (!drop) continue;
+    m_state.push(*drop);
     if (d > breakup_m) {
       m_breakups += break_up(m_state, m_state.size() - 1, breakup_m, m_next_id, m_params.seed) > 0;
     }
@@ -218,7 +222,7 @@ void World::handle_events(double t_end_s) {
       if (counting) {
         ++m_ground_hits;
         if (measured) {
-          m_ground_water_m3 += diameter * diameter * diameter * (3.14159265358979323846 / 6.0);
+          m_ground_water_m3 += diameter * diameter * diameter * (std::numbers::pi / 6.0);
         }
       }
       // The footprint is the volume's ground (ground_impacts.h); outside it the sampler's.

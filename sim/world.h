@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <exception>
+#include <optional>
 #include <vector>
 
 #include "sim/drop_size.h"
@@ -92,6 +93,12 @@ class World {
  private:
   void fill();
   void spawn(double t_s);
+  /// The drop `id` of the given diameter at height y and at (across, along) in [0, 1)² of the
+  /// spawn region, falling at its terminal speed with the wind's horizontal part; none when it
+  /// cannot drift onto the view's footprint before it reaches the ground.
+  [[nodiscard]] std::optional<NewDrop> new_drop(std::uint64_t id, double across, double along,
+                                                double y, double diameter, double terminal_speed,
+                                                const glm::dvec3& wind) const;
   void handle_events(double t_end_s);
   void sample_ground(double t_end_s);
   void add_ground_effects(Frame& frame) const;

@@ -2,35 +2,23 @@
 // --diff and --html outputs, and error messages that name both files and their sizes.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "compare/image_io.h"
+#include "tests/support/command.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using raintrace::compare::Image;
 
-struct CommandResult {
-  int exit_code = -1;
-  std::string output;
-};
+using raintrace::test_support::CommandResult;
 
 CommandResult raintrace_compare(const std::string& args) {
-  CommandResult r;
-  FILE* pipe = popen((std::string("'" RAINTRACE_EXE "' compare ") + args + " 2>&1").c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf;
-  while (fgets(buf.data(), int(buf.size()), pipe)) r.output += buf.data();
-  const int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  return raintrace::test_support::run_command("'" RAINTRACE_EXE "' compare " + args);
 }
 
 class CompareCli : public ::testing::Test {

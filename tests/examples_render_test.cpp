@@ -19,6 +19,7 @@
 #include "output/budget.h"
 #include "output/export.h"
 #include "output/folder_state.h"
+#include "tests/support/pixels.h"
 
 namespace raintrace {
 namespace {
@@ -36,14 +37,7 @@ std::vector<fs::path> examples() {
   return files;
 }
 
-std::vector<float> read_rgb(const fs::path& path) {
-  auto in = OIIO::ImageInput::open(path.string());
-  if (!in) return {};
-  const OIIO::ImageSpec& spec = in->spec();
-  std::vector<float> px(static_cast<std::size_t>(spec.width) * spec.height * 3);
-  in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, px.data());
-  return px;
-}
+using raintrace::test_support::read_rgb;
 
 /// Exports frame 1 of the scene at 64×36 into dir, renders it and develops it; returns the
 /// developed pixels.
@@ -67,6 +61,50 @@ std::vector<float> export_and_render(cli::Scene scene, const fs::path& dir) {
   film::develop_file(dir / "images" / "frame_0001.exr", dir / "images" / "frame_0001.png",
                      scene.develop, {scene.look.camera.fov_deg, scene.sim.seed, 1}, display);
   return read_rgb(dir / "images" / "frame_0001.png");
+}
+
+/// The images (scene-linear EXRs) povray scene.ini renders in `dir`, by file name.
+std::vector<std::string> render_scene_ini(const fs::path& dir) {
+  fs::remove_all(dir / "images");
+  fs::create_directories(dir / "images");
+  const std::string command =
+      "cd '" + dir.string() + "' && povray scene.ini -D -V >povray.log 2>&1";
+  EXPECT_EQ(std::system(command.c_str()), 0) << "povray scene.ini failed in " << dir;
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir / "images")) {
+    if (entry.is_regular_file()) names.push_back(entry.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+/// Exports frames first..last of the scene into dir, as `raintrace export --frames` does.
+void export_range(const cli::Scene& scene, const fs::path& dir, int first, int last) {
+  const output::SceneToExport e = cli::scene_to_export(scene);
+  auto folder = output::FolderState::claim(dir, output::identity_of(scene.text, e), false, "test");
+  output::export_frames(folder, e, {first, last});
+}
+
+TEST(PartialExport, SceneIniRendersExactlyTheExportedFrames) {
+  if (!have_povray()) GTEST_SKIP() << "povray is not installed";
+  cli::Scene scene = cli::load_scene_file(fs::path{RAINTRACE_SOURCE_DIR} / "examples/default.toml");
+  scene.look.width = 32;
+  scene.look.height = 18;
+  scene.sim.prewarm_s = 0.0;
+  scene.sim.substep_s = 0.01;
+  const fs::path dir = fs::path{::testing::TempDir()} / "raintrace_partial_export";
+  fs::remove_all(dir);
+  // Once `povray scene.ini` of a folder exported with --frames 1-2 failed at frame 3.
+  export_range(scene, dir, 2, 3);
+  EXPECT_EQ(render_scene_ini(dir), (std::vector<std::string>{"frame_0002.exr", "frame_0003.exr"}));
+  // A later export that joins the earlier frames renders them all…
+  export_range(scene, dir, 4, 4);
+  EXPECT_EQ(render_scene_ini(dir),
+            (std::vector<std::string>{"frame_0002.exr", "frame_0003.exr", "frame_0004.exr"}));
+  // …and one that leaves a gap renders its own frames only.
+  export_range(scene, dir, 7, 7);
+  EXPECT_EQ(render_scene_ini(dir), (std::vector<std::string>{"frame_0007.exr"}));
+  fs::remove_all(dir);
 }
 
 class ExampleRender : public ::testing::TestWithParam<fs::path> {};
@@ -112,8 +150,8 @@ TEST_P(ExampleRender, RendersRainThatChangesThePicture) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, ExampleRender, ::testing::ValuesIn(examples()),
-                         [](const ::testing::TestParamInfo<fs::path>& test) {
-                           return test.param.stem().string();
+                         [](const ::testing::TestParamInfo<fs::path>& example) {
+                           return example.param.stem().string();
                          });
 
 }  // namespace

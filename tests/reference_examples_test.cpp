@@ -7,7 +7,6 @@
 // update-references`, never here.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
 #include <algorithm>
 #include <array>
 #include <cstdio>
@@ -21,6 +20,7 @@
 #include "compare/report_html.h"
 #include "compare/report_json.h"
 #include "compare/report_table.h"
+#include "tests/support/command.h"
 
 namespace {
 
@@ -30,21 +30,8 @@ namespace cmp = raintrace::compare;
 const fs::path kSource = RAINTRACE_SOURCE_DIR;
 const fs::path kWork = RAINTRACE_REFERENCE_WORK_DIR;
 
-struct CommandResult {
-  int exit_code = -1;
-  std::string output;
-};
-
-CommandResult run_command(const std::string& command) {
-  CommandResult r;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf;
-  while (fgets(buf.data(), int(buf.size()), pipe)) r.output += buf.data();
-  const int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using raintrace::test_support::CommandResult;
+using raintrace::test_support::run_command;
 
 std::string quote(const fs::path& p) { return "'" + p.string() + "'"; }
 
@@ -117,8 +104,8 @@ TEST_P(ReferenceStills, RenderMatchesReference) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, ReferenceStills, ::testing::ValuesIn(example_names()),
-                         [](const ::testing::TestParamInfo<std::string>& test) {
-                           return test.param;
+                         [](const ::testing::TestParamInfo<std::string>& example) {
+                           return example.param;
                          });
 
 }  // namespace

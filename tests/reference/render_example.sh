@@ -2,9 +2,10 @@
 # Renders the reference frames of one example, the one recipe shared by the reference test and
 # update.sh: a copy of the scene at 160×90, preview quality (no antialiasing, so no jitter) and
 # frames 1..N, exported with `raintrace export`, rendered by plain `povray scene.ini` in the
-# output folder (the folder renders without raintrace: scene-linear EXRs), then developed by
-# `raintrace render OUT`, which finds the EXRs rendered and develops each into the PNG a render
-# makes. Leaves WORKDIR/out/images/ (frame_NNNN.exr and the developed frame_NNNN.png).
+# output folder (docs/design.md: the folder renders without raintrace, as scene-linear EXRs),
+# then developed by `raintrace render OUT`, which finds the EXRs rendered and develops each
+# into the PNG a render makes. Leaves WORKDIR/out/images/ (frame_NNNN.exr and the developed
+# frame_NNNN.png).
 # Usage: render_example.sh RAINTRACE EXAMPLE.toml WORKDIR [FRAMES=2]
 set -euo pipefail
 raintrace=$1
@@ -30,7 +31,7 @@ awk -v frames="$frames" '
   echo "render_example.sh: 'raintrace export' failed for $example (log: $work/export.log)" >&2
   exit 1
 }
-# -D: no display; one thread, so even jittered effects would repeat (POVRAY-NOTES).
+# -D: no display; one thread, so even jittered effects would repeat (docs/povray-notes.md).
 (cd "$work/out" && povray scene.ini -D +WT1 > "$work/povray.log" 2>&1) || {
   tail -20 "$work/povray.log" >&2
   echo "render_example.sh: povray failed in $work/out (log: $work/povray.log)" >&2

@@ -2,7 +2,7 @@
 # Regenerates the reference stills in tests/reference/<example>/ from examples/*.toml. Only ever
 # run on purpose (CMake target `update-references`), never by a test: a reference changes when a
 # human decides the new pictures are right. Review the change with
-#   raintrace compare <old reference> <new reference> --html /tmp/ref.html
+#   raintrace compare <old reference> <new reference> --html ref-review.html
 # Usage: update.sh RAINTRACE WORKDIR [EXAMPLE...]   (no EXAMPLE = all of examples/*.toml)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
