@@ -77,11 +77,11 @@ TEST(GroundScene, SharedFilesHoldTheIncludeAndTheMaskFramesTheirMaps) {
   ExportParams look = with_puddles();
   look.width = 64;
   look.height = 36;
-  const std::string hash = write_shared_files(dir, look, 1, dir);
+  const std::string hash = write_shared_files(dir, look, 1, dir, {1, 1});
   EXPECT_TRUE(fs::is_regular_file(dir / "raintrace_ground.inc"));
   EXPECT_TRUE(fs::is_regular_file(dir / "textures" / "puddle_mask.png"));
   look.ground.puddles.coverage = 0.5;
-  EXPECT_NE(write_shared_files(dir, look, 1, dir), hash);
+  EXPECT_NE(write_shared_files(dir, look, 1, dir, {1, 1}), hash);
 
   FrameValues values;
   values.index = 1;

@@ -52,7 +52,8 @@ fs::path wet_folder(const std::string& name, const ExportParams& base,
   std::ofstream(dir / "wet.inc") << kWetPlane;
   ExportParams look = base;
   look.environment.include_path = "wet.inc";
-  const std::string shared = write_shared_files(dir, look, static_cast<int>(frames.size()), dir);
+  const std::string shared = write_shared_files(dir, look, static_cast<int>(frames.size()), dir,
+                                                {1, static_cast<int>(frames.size())});
   FrameValues values;
   for (const sim::Frame& frame : frames) {
     build_frame_values(frame, look, values);
