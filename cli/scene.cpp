@@ -118,6 +118,9 @@ void read_lightning(TableReader r, sim::LightningParams& lightning, double& ligh
   r.read_number("strikes_per_minute", lightning.strikes_per_minute, Range::closed(0.0, 600.0));
   r.read_integer("generations", lightning.generations, 1, 8);
   r.read_number("cloud_height_m", lightning.cloud_height_m, Range::closed(10.0, 5000.0));
+  r.read_number("azimuth_deg", lightning.azimuth_deg, Range::closed(-180.0, 180.0));
+  r.read_number("azimuth_spread_deg", lightning.azimuth_spread_deg, Range::closed(0.0, 180.0));
+  r.read_number("distance_m", lightning.distance_m, Range::closed(0.0, 10000.0));
   r.read_number("distance_min_m", lightning.distance_min_m, Range::closed(0.0, 10000.0));
   r.read_number("distance_max_m", lightning.distance_max_m, Range::closed(0.0, 10000.0));
   if (lightning.distance_min_m > lightning.distance_max_m) {

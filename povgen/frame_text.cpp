@@ -304,6 +304,32 @@ void write_streak_mesh(Emitter& out, const std::vector<StreakValue>& streaks,
   out.text("}\ntexture{RT_StreakTexture}\nno_shadow hollow\n}\n");
 }
 
+// How far a bolt's glow reaches, in radii of its channel.
+constexpr float kBoltGlowRadii = 8.0f;
+
+void write_cylinders(Emitter& out, const std::vector<CylinderValue>& segments, float widen) {
+  for (const CylinderValue& c : segments) {
+    out.text("cylinder{<");
+    out.number(c.start.x);
+    out.text(",");
+    out.number(c.start.y);
+    out.text(",");
+    out.number(c.start.z);
+    out.text(">,<");
+    out.number(c.end.x);
+    out.text(",");
+    out.number(c.end.y);
+    out.text(",");
+    out.number(c.end.z);
+    out.text(">,");
+    out.number(c.radius * widen);
+    out.text("}\n");
+  }
+}
+
+// Each group of segments twice: the channel itself (RT_BoltCore), and around it the light that
+// rain and cloud scatter out of it (RT_BoltGlow, scene.inc), a merge so that segments meeting
+// at a joint do not glow twice there.
 void write_bolts(Emitter& out, const std::vector<BoltValue>& bolts) {
   if (bolts.empty()) return;
   // Bolts are light, not rain: the rain mask leaves them out.
@@ -311,24 +337,12 @@ void write_bolts(Emitter& out, const std::vector<BoltValue>& bolts) {
   for (const BoltValue& bolt : bolts) {
     if (bolt.segments.empty()) continue;
     out.text("union{\n");
-    for (const CylinderValue& c : bolt.segments) {
-      out.text("cylinder{<");
-      out.number(c.start.x);
-      out.text(",");
-      out.number(c.start.y);
-      out.text(",");
-      out.number(c.start.z);
-      out.text(">,<");
-      out.number(c.end.x);
-      out.text(",");
-      out.number(c.end.y);
-      out.text(",");
-      out.number(c.end.z);
-      out.text(">,");
-      out.number(c.radius);
-      out.text("}\n");
-    }
-    out.text("RT_BoltTexture(");
+    write_cylinders(out, bolt.segments, 1.0f);
+    out.text("RT_BoltCore(");
+    out.number(bolt.brightness);
+    out.text(")\nno_shadow hollow\n}\nmerge{\n");
+    write_cylinders(out, bolt.segments, kBoltGlowRadii);
+    out.text("RT_BoltGlow(");
     out.number(bolt.brightness);
     out.text(")\nno_shadow hollow\n}\n");
   }

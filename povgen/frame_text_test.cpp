@@ -67,7 +67,12 @@ TEST(FrameText, GoldenTinyFrame) {
       "#if(RT_Mask=0)\n"
       "union{\n"
       "cylinder{<0,100,50>,<2,0,50>,0.5}\n"
-      "RT_BoltTexture(0.25)\n"
+      "RT_BoltCore(0.25)\n"
+      "no_shadow hollow\n"
+      "}\n"
+      "merge{\n"
+      "cylinder{<0,100,50>,<2,0,50>,4}\n"
+      "RT_BoltGlow(0.25)\n"
       "no_shadow hollow\n"
       "}\n"
       "#end\n";

@@ -32,9 +32,11 @@ struct CylinderValue {
   float radius;
 };
 
+/// The segments of one bolt that glow alike: its main channel, or its branches of one
+/// generation.
 struct BoltValue {
   std::vector<CylinderValue> segments;
-  float brightness;  ///< 0..1
+  float brightness;  ///< ~0..1: 1 is the first return stroke's peak in the main channel
 };
 
 struct FrameValues {

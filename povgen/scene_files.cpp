@@ -112,6 +112,28 @@ std::string environment_with_plate_text(const ExportParams& look, const std::str
   return text;
 }
 
+// The lightning channel's look, called by the frames for each group of bolt segments (the main
+// channel, the branches of one generation) with its brightness B (~0..1, sim::Bolt). Scene-
+// linear for an HDR frame: the channel itself far brighter than any lamp (60·B, white in any
+// filmic view), and around it the light the rain and cloud scatter out of it, 2·B at its centre
+// falling off as exp(−(2.5·b/R)²) with the distance b from the axis, R the glow cylinder's
+// radius. The glow is drawn on the surface of that cylinder: POV-Ray's aoi pattern gives the
+// angle between ray and surface, and sin(aoi) is b/R (v = 1 − asin(b/R)/π entering,
+// asin(b/R)/π leaving, hence the symmetric map); each of the two surfaces a ray crosses adds half.
+// 0.1 % opaque, it dims the sky behind by that and emits 1/1000 of its emission.
+std::string bolt_macros_text() {
+  return "#macro RT_BoltCore(B)\n"
+         " texture{pigment{rgb<0.86,0.9,1>} finish{ambient 0 diffuse 0 emission 60*B}}\n#end\n"
+         "#macro RT_BoltGlow(B)\n"
+         " texture{pigment{aoi color_map{[0 rgbt<1,1,1,0.999>] [0.0641 rgbt<0.7788,0.7788,"
+         "0.7788,0.999>]\n  [0.131 rgbt<0.3679,0.3679,0.3679,0.999>] [0.2048 rgbt<0.1054,0.1054,"
+         "0.1054,0.999>]\n  [0.2952 rgbt<0.0183,0.0183,0.0183,0.999>] [0.5 rgbt<0,0,0,0.999>]\n"
+         "  [0.7048 rgbt<0.0183,0.0183,0.0183,0.999>] [0.7952 rgbt<0.1054,0.1054,0.1054,0.999>]\n"
+         "  [0.869 rgbt<0.3679,0.3679,0.3679,0.999>] [0.9359 rgbt<0.7788,0.7788,0.7788,0.999>]\n"
+         "  [1 rgbt<1,1,1,0.999>]}}\n"
+         "  finish{ambient 0 diffuse 0 emission 1000*B*<0.8,0.85,1>}}\n#end\n";
+}
+
 }  // namespace
 
 bool environment_plate_applies(const ExportParams& look) {
@@ -167,6 +189,7 @@ std::string scene_inc_text(const ExportParams& look) {
           vec(look.camera.look_at) + " right x*" + aspect + " up y angle " +
           format_number(look.camera.fov_deg) + "}\n";
   text += "#declare RT_LightningLight=" + format_number(look.lightning_light) + ";\n";
+  text += bolt_macros_text();
   text += "#declare RT_CameraPosition=" + vec(look.camera.position) + ";\n";
   text += "#include \"" + std::string{kMaterialsInclude} + "\"\n";
   text += "#if(RT_Mask)\nbackground{rgb 0}\n#else\n";

@@ -74,7 +74,16 @@ struct LightningParams {
   int generations = 5;
   /// Height of the cloud base where bolts start, metres, in [10, 5000]. Default 300.
   double cloud_height_m = 300.0;
-  /// Horizontal distance of strikes from the camera, metres: [min, max]. Default 80..400.
+  /// Where strikes land, as seen from the camera: degrees from its horizontal view direction,
+  /// positive to the right, in [-180, 180]. The first strike lands exactly there. Default 0.
+  double azimuth_deg = 0.0;
+  /// Later strikes land within ± this of azimuth_deg (uniformly), degrees, in [0, 180].
+  /// Default 25.
+  double azimuth_spread_deg = 25.0;
+  /// Horizontal distance of the first strike from the camera, metres, in [0, 10000].
+  /// Default 400.
+  double distance_m = 400.0;
+  /// Horizontal distance of later strikes from the camera, metres: [min, max]. Default 80..400.
   double distance_min_m = 80.0;
   double distance_max_m = 400.0;
   /// Radius of the trunk, metres, in (0, 10]. Default 0.6.

@@ -90,6 +90,9 @@ void validate(const SimParams& p) {
   in_range(l.strikes_per_minute, 0.0, 600.0, "lightning.strikes_per_minute");
   in_range(l.generations, 1, 8, "lightning.generations");
   in_range(l.cloud_height_m, 10.0, 5000.0, "lightning.cloud_height_m");
+  in_range(l.azimuth_deg, -180.0, 180.0, "lightning.azimuth_deg");
+  in_range(l.azimuth_spread_deg, 0.0, 180.0, "lightning.azimuth_spread_deg");
+  in_range(l.distance_m, 0.0, 1.0e5, "lightning.distance_m");
   in_range(l.distance_min_m, 0.0, 1.0e5, "lightning.distance_min_m");
   in_range(l.distance_max_m, l.distance_min_m, 1.0e5, "lightning.distance_max_m");
   if (!(l.trunk_radius_m > 0.0 && l.trunk_radius_m <= 10.0)) {
