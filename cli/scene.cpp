@@ -43,11 +43,12 @@ void read_output(TableReader r, Scene& scene) {
   r.finish();
 }
 
-void read_camera(TableReader r, sim::Camera& camera) {
+void read_camera(TableReader r, sim::Camera& camera, double& aperture_m) {
   r.read_vec3("position", camera.position, kCoordinate);
   r.read_vec3("look_at", camera.look_at, kCoordinate);
   r.read_number("fov_deg", camera.fov_deg, Range::open(1.0, 170.0));
   r.read_number("exposure_s", camera.exposure_s, Range::closed(0.0, 1.0));
+  r.read_number("aperture_m", aperture_m, Range::closed(0.0, 1.0));
   const glm::dvec3 view = camera.look_at - camera.position;
   if (glm::length(view) < 1e-6) {
     r.fail(
@@ -196,7 +197,7 @@ Scene load_scene_string(std::string_view toml_text, const std::string& source_na
   TableReader root(document, "", source_name);
   root.read_unsigned("seed", scene.sim.seed);
   read_output(root.section("output"), scene);
-  read_camera(root.section("camera"), scene.sim.camera);
+  read_camera(root.section("camera"), scene.sim.camera, scene.look.aperture_m);
   read_rain(root.section("rain"), scene.sim.rain);
   read_wind(root.section("wind"), scene.sim.wind);
   read_splashes(root.section("splashes"), scene.sim.splashes);

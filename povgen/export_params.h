@@ -48,6 +48,11 @@ enum class Quality {
 
 struct ExportParams {
   sim::Camera camera;
+  /// Diameter of the lens opening, metres, in [0, 1]. 0 (the default) is a pinhole: everything
+  /// sharp. Otherwise the camera focuses on camera.look_at and blurs the rest (POV-Ray focal
+  /// blur): a point at distance d, the focus at f, spreads over a disc of aperture_m·|d − f|/d
+  /// at the plane of focus.
+  double aperture_m = 0.0;
   /// Image size in pixels, each in [16, 8192]. Default 640×360.
   int width = 640;
   int height = 360;
