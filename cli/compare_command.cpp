@@ -36,6 +36,9 @@ exceeds --hard-fail; else it WARNS by the same rule with the --warn options; els
 Defaults as idiff: --fail 1e-6 --warn 1e-6, percentages 0, relative 0, hard limits infinite.
 Metrics: mean/max absolute error, RMSE, PSNR = 20 log10(1/RMSE), SSIM of Rec.709 luminance
 (Wang et al. 2004: 11x11 Gaussian window sigma 1.5, C1=(0.01)^2, C2=(0.03)^2, L=1).
+NaN or Inf against any other value is an infinite error: it fails and warns whatever the
+thresholds, mean error, RMSE, PSNR and SSIM read nan or inf (null in --json), and the pixels
+are counted ("N pixel(s) hold NaN or Inf"); NaN against NaN, or the same Inf, counts as equal.
 Folders are matched by file name; a frame on one side only counts as a failure.
 Exit codes: 0 all pass or warn, 1 any fail or missing frame, 2 unusable input.
 Example: raintrace compare tests/reference/default out/default/images --fail 0.02 --fail-percent 1)";

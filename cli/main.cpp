@@ -23,7 +23,8 @@ Commands, each with an example (`raintrace COMMAND --help` shows all options and
             raintrace compare tests/reference/default out/default/images
 
 Scene files: docs/scene-format.md; examples: examples/*.toml.
-Exit codes: 0 success, 1 partly failed (frames, image differences), 2 unusable input.)";
+Exit codes: 0 success, 1 partly failed (frames, image differences), 2 unusable input,
+3 system error (disk full, permission denied), 4 output folder in use by another run.)";
 
 }  // namespace
 
@@ -51,8 +52,8 @@ int main(int argc, char** argv) {
     }
   } catch (const std::exception& e) {
     std::fflush(stdout);
-    fmt::print(stderr, "raintrace: error: {}\n", e.what());
-    return cli::exit_code::error;
+    fmt::print(stderr, "raintrace: error: {}\n", cli::error_line(e));
+    return cli::exit_code_for(e);
   }
   return cli::exit_code::error;
 }

@@ -1,8 +1,9 @@
-// `raintrace render SCENE.toml -o OUT`: simulate + export (cli/export_pipeline.h) and ray-trace
-// every frame with POV-Ray, then make the MP4, GIF and contact sheet. Locally the two overlap:
-// the exporter runs on its own thread and POV-Ray starts on each range of frames as soon as the
+// `raintrace render SCENE.toml -o OUT`: simulate + export (output/export.h) and ray-trace every
+// frame with POV-Ray, then make the MP4, GIF and contact sheet. Locally the two overlap: the
+// exporter runs on its own thread and POV-Ray starts on each range of frames as soon as the
 // range is exported. Slurm exports everything first, then submits one job array. Re-running
-// resumes: finished frames whose inputs are unchanged are never redone.
+// resumes: finished frames whose inputs and images are unchanged are never redone. What is up
+// to date, and whether this run may use OUT at all, is output::FolderState's decision.
 //
 // Options (each with an example in --help):
 //   --frames A-B   --jobs N   --width W --height H   --quality preview|final   --mask   --force
@@ -12,7 +13,6 @@
 #include <unistd.h>
 #include <CLI/CLI.hpp>
 #include <atomic>
-#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -25,17 +25,17 @@
 
 #include "cli/command.h"
 #include "cli/exit_codes.h"
-#include "cli/export_pipeline.h"
+#include "cli/folder_run.h"
 #include "cli/scene.h"
-#include "povgen/frame_text.h"
-#include "povgen/manifest.h"
-#include "render/contact_sheet.h"
+#include "cli/stop_signals.h"
+#include "output/export.h"
+#include "output/folder_state.h"
+#include "render/assemble.h"
 #include "render/frame_feed.h"
-#include "render/frame_plan.h"
 #include "render/local_render.h"
-#include "render/movie.h"
 #include "render/progress_format.h"
 #include "render/slurm_render.h"
+#include "render/spans.h"
 
 namespace raintrace::cli {
 namespace {
@@ -55,6 +55,7 @@ struct RenderArgs {
   int tasks = 0;
   bool no_movie = false;
   std::string slurm_task;
+  LimitArgs limits;
 };
 
 constexpr const char* kFooter = R"(
@@ -64,7 +65,7 @@ Examples:
   raintrace render examples/default.toml -o out/default --jobs 3   # POV-Ray processes in flight
   raintrace render examples/default.toml -o out/small --width 320 --height 240
   raintrace render examples/default.toml -o out/final --quality final   # antialiased
-  raintrace render examples/default.toml -o out/default --mask     # also images/mask_NNNN.png
+  raintrace render examples/default.toml -o out/masks --mask       # also images/mask_NNNN.png
   raintrace render examples/default.toml -o out/default --force    # re-render every frame
   raintrace render out/default                                     # an already exported folder
   raintrace render examples/default.toml -o /shared/out --backend slurm --partition short --tasks 16
@@ -74,42 +75,21 @@ frames are still simulated (Slurm exports everything first, then submits).
 Re-running the same command renders only frames that are missing or whose inputs changed;
 Ctrl-C stops the export and POV-Ray, keeps finished frames, and the next run resumes.
 Output: OUT/images/frame_NNNN.png, OUT/animation.mp4 and .gif (needs ffmpeg),
-OUT/contact_sheet.png, OUT/manifest.json (per-frame status and seconds), OUT/logs/.
+OUT/contact_sheet.png, OUT/manifest.json (per-frame status, image size and content hash,
+seconds: docs/output-folder.md), OUT/raintrace.lock, OUT/logs/.
 Slurm: OUT and the raintrace binary must be on a filesystem every node mounts at the same path;
 the nodes need POV-Ray. Each array task runs `raintrace render --slurm-task OUT`.
-Exit codes: 0 all frames rendered, 1 some frames failed, 2 unusable input or missing POV-Ray,
-130/143 interrupted (SIGINT/SIGTERM).)";
-
-// Set from the signal handler; a lock-free atomic store is async-signal-safe.
-std::atomic<bool> g_stop{false};
-std::atomic<int> g_signal{0};
-
-extern "C" void on_stop_signal(int sig) {
-  g_signal.store(sig);
-  g_stop.store(true);
-}
-
-// Installs SIGINT/SIGTERM handlers for its lifetime, restoring the previous ones afterwards.
-class StopSignals {
- public:
-  StopSignals() {
-    struct sigaction sa {};
-    sa.sa_handler = on_stop_signal;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, &m_old_int);
-    sigaction(SIGTERM, &sa, &m_old_term);
-  }
-  ~StopSignals() {
-    sigaction(SIGINT, &m_old_int, nullptr);
-    sigaction(SIGTERM, &m_old_term, nullptr);
-  }
-  StopSignals(const StopSignals&) = delete;
-  StopSignals& operator=(const StopSignals&) = delete;
-
- private:
-  struct sigaction m_old_int {};
-  struct sigaction m_old_term {};
-};
+OUT must be new, empty, or a folder raintrace made from the same scene and settings (seed,
+size, quality, masks): another scene's folder is refused unless --force, which deletes its
+frames and images first. A second run on the same folder stops at once and says who holds it.
+The memory and simulation work a scene asks for are estimated before anything starts; past
+--max-memory or --max-drop-steps the run stops, naming the scene keys to change.
+Images are checked against the size and content hash recorded when they were made: a missing,
+truncated or changed image is rendered again, and the movie and contact sheet show only
+checked frames.
+Exit codes: 0 all frames rendered, 1 some frames failed, 2 unusable input, output folder or
+missing POV-Ray, 3 system error (disk full, permission denied: the message says which),
+4 output folder in use by another raintrace, 130/143 interrupted (SIGINT/SIGTERM).)";
 
 // Prints progress to stderr: a bar redrawn in place on a terminal, plain lines otherwise.
 class ProgressPrinter {
@@ -156,25 +136,26 @@ class ProgressPrinter {
 };
 
 // Runs the export on its own thread and hands each frame to the renderer through `feed`. The
-// stop flag ends it between frames; an export error sets the flag too (so POV-Ray stops) and is
+// stop flag ends it between substeps; an export error sets the flag too (so POV-Ray stops) and is
 // rethrown by finish(). The destructor stops and joins, so no path leaves the thread running.
+// The folder is the export's until its shared files are written, then the renderer's alone.
 class ExportThread {
  public:
-  ExportThread(const Scene& scene, const FrameRange& range, const std::filesystem::path& out,
-               render::FrameFeed& feed, std::atomic<bool>& stop)
+  ExportThread(output::FolderState& folder, const output::SceneToExport& scene,
+               output::FrameSpan range, render::FrameFeed& feed, std::atomic<bool>& stop)
       : m_stop{stop} {
     auto shared_files = m_shared_files.get_future();
-    m_thread = std::thread([this, &scene, range, out, &feed] {
+    m_thread = std::thread([this, &folder, &scene, range, &feed] {
       bool announced = false;
       try {
-        ExportHooks hooks;
+        output::ExportHooks hooks;
         hooks.stop = &m_stop;
         hooks.on_shared_files = [&] {
           announced = true;
           m_shared_files.set_value();
         };
-        hooks.on_frame = [&](povgen::FrameEntry entry) { feed.publish(std::move(entry)); };
-        export_scene(scene, range, out, hooks);
+        hooks.on_frame = [&](output::ExportedFrame frame) { feed.publish(std::move(frame)); };
+        output::export_frames(folder, scene, range, hooks);
       } catch (...) {
         m_error = std::current_exception();
         m_stop.store(true);
@@ -223,23 +204,22 @@ int run_worker(const RenderArgs& args) {
   const char* id = std::getenv("SLURM_ARRAY_TASK_ID");
   if (id == nullptr) throw std::runtime_error("--slurm-task runs inside a Slurm array task only");
   StopSignals signals;
-  return render::run_slurm_task(args.slurm_task, std::stoi(id), &g_stop);
+  return render::run_slurm_task(args.slurm_task, std::stoi(id), &stop_requested());
 }
 
-int run_render(const RenderArgs& args) {
-  if (!args.slurm_task.empty()) return run_worker(args);
-  if (args.backend != "local" && args.backend != "slurm") {
-    throw std::invalid_argument("--backend must be local or slurm, not '" + args.backend + "'");
-  }
-  if (args.backend == "local") render::require_povray();
-
-  // SCENE.toml → export into OUT; an exported folder (manifest.json inside) → render it as is.
-  std::filesystem::path out;
+// The folder this run renders, claimed for a scene file (export first) or opened as exported.
+struct RenderInput {
+  std::optional<output::FolderState> folder;
+  std::optional<output::SceneToExport> scene;  ///< set: export `range` first
+  output::FrameSpan range;
   std::optional<render::FrameSpan> only;
-  std::optional<Scene> overlapped;  // local backend, scene file: exported while rendering
-  FrameRange range;
+};
+
+RenderInput prepare(const RenderArgs& args, int povray_processes) {
+  RenderInput in;
   const std::filesystem::path input{args.scene};
-  if (std::filesystem::is_directory(input) && std::filesystem::exists(input / "manifest.json")) {
+  if (std::filesystem::is_directory(input)) {
+    // An exported folder: rendered as it is.
     if (!args.out.empty() &&
         std::filesystem::absolute(args.out) != std::filesystem::absolute(input)) {
       throw std::invalid_argument(
@@ -249,128 +229,132 @@ int run_render(const RenderArgs& args) {
       throw std::invalid_argument(
           "--width/--height/--quality change the scene: give the scene file, not the folder");
     }
-    out = input;
+    in.folder.emplace(output::FolderState::open(input, this_command()));
+    const auto& manifest = in.folder->manifest();
+    if (args.mask && !manifest.identity.masks) {
+      throw std::invalid_argument(
+          "this folder was exported without masks: render the scene file with --mask");
+    }
     if (!args.frames.empty()) {
-      const auto manifest = povgen::read_manifest(out / "manifest.json");
-      const auto frames = parse_frame_range(args.frames, static_cast<int>(manifest.frames.size()));
-      only = render::FrameSpan{frames.first, frames.last};
+      const int frames = std::max(manifest.frame_count, static_cast<int>(manifest.frames.size()));
+      const auto r = parse_frame_range(args.frames, frames);
+      in.only = render::FrameSpan{r.first, r.last};
     }
-  } else {
-    if (args.out.empty()) throw std::invalid_argument("-o OUT is required with a scene file");
-    out = args.out;
-    Scene scene = load_scene_file(input);
-    if (args.width != 0) scene.look.width = args.width;
-    if (args.height != 0) scene.look.height = args.height;
-    if (!args.quality.empty()) {
-      scene.look.quality =
-          args.quality == "final" ? povgen::Quality::final : povgen::Quality::preview;
-    }
-    if (args.mask) scene.look.mask = true;
-    range = parse_frame_range(args.frames, scene.frames);
-    only = render::FrameSpan{range.first, range.last};
-    fmt::print(stderr, "export: simulating and writing frames {}-{} to {}{}\n", range.first,
-               range.last, out.string(),
-               args.backend == "local" ? " (POV-Ray starts as they are written)" : "");
-    if (args.backend == "local") {
-      overlapped = std::move(scene);
-    } else {
-      export_scene(scene, range, out);  // the cluster gets a complete folder
-    }
+    return in;
   }
+  if (args.out.empty()) throw std::invalid_argument("-o OUT is required with a scene file");
+  Scene scene = load_scene_file(input);
+  if (args.width != 0) scene.look.width = args.width;
+  if (args.height != 0) scene.look.height = args.height;
+  if (!args.quality.empty()) {
+    scene.look.quality =
+        args.quality == "final" ? povgen::Quality::final : povgen::Quality::preview;
+  }
+  if (args.mask) scene.look.mask = true;
+  const FrameRange range = parse_frame_range(args.frames, scene.frames);
+  in.range = {range.first, range.last};
+  in.only = in.range;
+  in.scene = scene_to_export(scene);
+  check_run_budget(*in.scene, in.range, povray_processes, args.limits);
+  output::ClaimNote note;
+  in.folder.emplace(output::FolderState::claim(args.out, output::identity_of(scene.text, *in.scene),
+                                               args.force, this_command(), &note));
+  if (!note.text.empty()) fmt::print(stderr, "render: {}\n", note.text);
+  return in;
+}
+
+int run_render(const RenderArgs& args) {
+  if (!args.slurm_task.empty()) return run_worker(args);
+  if (args.backend != "local" && args.backend != "slurm") {
+    throw std::invalid_argument("--backend must be local or slurm, not '" + args.backend + "'");
+  }
+  if (args.backend == "local") render::require_povray();
+  StopSignals signals;
+  // Slurm: each node runs one POV-Ray per task; this machine only simulates.
+  const int jobs = args.jobs > 0 ? args.jobs : render::default_jobs();
+  RenderInput in = prepare(args, args.backend == "local" ? jobs : 1);
+  output::FolderState& folder = *in.folder;
+  const std::filesystem::path out = folder.dir();
 
   ProgressPrinter printer;
   render::RenderSummary summary;
-  {
-    StopSignals signals;
-    auto on_failed = [&](const render::FrameFailure& f) {
+  auto on_failed = [&](const render::FrameFailure& f) {
+    printer.break_line();
+    print_failure(f, out);
+  };
+  auto on_progress = [&](const render::RenderProgress& p) { printer.update(p); };
+  auto on_notice = [&](const std::string& s) {
+    printer.break_line();
+    fmt::print(stderr, "render: {}\n", s);
+  };
+  auto on_plan = [&](const output::RenderPlan& plan) {
+    fmt::print(stderr, "render: {}\n", plan.summary());
+  };
+  if (in.scene) {
+    fmt::print(stderr, "export: simulating and writing frames {}-{} to {}{}\n", in.range.first,
+               in.range.last, out.string(),
+               args.backend == "local" ? " (POV-Ray starts as they are written)" : "");
+  }
+  render::BackendSettings common;
+  common.force = args.force;
+  common.only = in.only;
+  common.stop = &stop_requested();
+  common.on_progress = on_progress;
+  common.on_failed = on_failed;
+  common.on_plan = on_plan;
+  if (args.backend == "local") {
+    render::LocalRenderSettings settings;
+    static_cast<render::BackendSettings&>(settings) = common;
+    settings.jobs = jobs;
+    settings.on_notice = on_notice;
+    if (in.scene) {
+      render::FrameFeed feed{in.range.count()};
+      ExportThread exporter{folder, *in.scene, in.range, feed, stop_requested()};
+      settings.incoming = &feed;
+      summary = render::render_local(folder, settings);
       printer.break_line();
-      print_failure(f, out);
-    };
-    auto on_progress = [&](const render::RenderProgress& p) { printer.update(p); };
-    if (args.backend == "local") {
-      render::LocalRenderSettings settings;
-      settings.jobs = args.jobs > 0 ? args.jobs : render::default_jobs();
-      settings.force = args.force;
-      settings.mask = args.mask;
-      settings.only = only;
-      settings.stop = &g_stop;
-      settings.on_progress = on_progress;
-      settings.on_failed = on_failed;
-      settings.on_notice = [&](const std::string& s) {
-        printer.break_line();
-        fmt::print(stderr, "render: {}\n", s);
-      };
-      if (overlapped) {
-        render::FrameFeed feed{range.last - range.first + 1,
-                               povgen::frame_digits(overlapped->frames)};
-        ExportThread exporter{*overlapped, range, out, feed, g_stop};
-        settings.incoming = &feed;
-        summary = render::render_local(out, settings);
-        printer.break_line();
-        exporter.finish();
-      } else {
-        summary = render::render_local(out, settings);
-      }
+      exporter.finish();
     } else {
+      summary = render::render_local(folder, settings);
+    }
+  } else {
+    if (in.scene) {
+      // The cluster gets a complete folder.
+      output::ExportHooks hooks;
+      hooks.stop = &stop_requested();
+      if (!output::export_frames(folder, *in.scene, in.range, hooks)) summary.interrupted = true;
+    }
+    if (!summary.interrupted) {
       render::SlurmRenderSettings settings;
+      static_cast<render::BackendSettings&>(settings) = common;
       settings.tasks = args.tasks;
       settings.partition = args.partition;
       settings.raintrace_exe = std::filesystem::read_symlink("/proc/self/exe");
-      settings.force = args.force;
-      settings.mask = args.mask;
-      settings.only = only;
-      settings.stop = &g_stop;
-      settings.on_progress = on_progress;
-      settings.on_failed = on_failed;
-      settings.on_status = [&](const std::string& s) {
-        printer.break_line();
-        fmt::print(stderr, "render: {}\n", s);
-      };
-      summary = render::render_slurm(out, settings);
+      settings.on_status = on_notice;
+      summary = render::render_slurm(folder, settings);
     }
-    printer.break_line();
   }
+  printer.break_line();
   const auto& p = summary.progress;
   if (summary.interrupted) {
-    const int sig = g_signal.load();
     fmt::print(stderr,
                "raintrace: interrupted by {}: {} frames finished and kept; run the same command "
                "again to resume\n",
-               sig == SIGTERM ? "SIGTERM" : "SIGINT", p.done);
-    return 128 + (sig != 0 ? sig : SIGINT);
+               stop_signal_name(), p.done);
+    return interrupted_exit_code();
   }
   fmt::print(stderr, "render: {} frames rendered, {} up to date, {} failed in {:.1f} s\n", p.done,
              p.skipped, p.failed, p.elapsed_seconds);
 
-  // Assemble what exists: every frame of the manifest that has a finished image.
-  const auto manifest = povgen::read_manifest(out / "manifest.json");
-  const int digits = render::frame_digits(manifest);
-  std::vector<int> finished;
-  for (const auto& f : manifest.frames) {
-    if (f.status == "rendered" && std::filesystem::exists(out / f.image)) {
-      finished.push_back(f.number);
-    }
-  }
-  fmt::print("images: {}/images/ ({} frames)\n", out.string(), finished.size());
-  if (!finished.empty()) {
-    const auto sheet = render::make_contact_sheet(out, finished, 9, digits);
-    if (!sheet.note.empty()) fmt::print(stderr, "raintrace: warning: {}\n", sheet.note);
-    fmt::print("contact sheet: {}\n", sheet.path.string());
-  }
-  // A movie needs consecutive frames: made from the first frame on, only when none is missing.
-  const bool consecutive = !finished.empty() && finished.back() - finished.front() + 1 ==
-                                                    static_cast<int>(finished.size());
-  if (!args.no_movie && finished.size() >= 2) {
-    if (!consecutive) {
-      fmt::print(stderr, "raintrace: warning: frames are missing: no MP4/GIF made\n");
-    } else {
-      const auto movies = render::make_movies(out, manifest.fps > 0 ? manifest.fps : 24.0,
-                                              finished.front(), digits);
-      if (!movies.warning.empty()) fmt::print(stderr, "raintrace: warning: {}\n", movies.warning);
-      if (!movies.mp4.empty()) fmt::print("video: {}\n", movies.mp4.string());
-      if (!movies.gif.empty()) fmt::print("gif: {}\n", movies.gif.string());
-    }
-  }
+  // The animation's outputs, from the frames whose images are verified now.
+  render::AssemblyOptions options;
+  options.movie = !args.no_movie;
+  const auto made = render::assemble(folder, options);
+  fmt::print("images: {}/images/ ({} frames)\n", out.string(), made.frames.size());
+  for (const auto& warning : made.warnings) fmt::print(stderr, "raintrace: warning: {}\n", warning);
+  if (!made.contact_sheet.empty()) fmt::print("contact sheet: {}\n", made.contact_sheet.string());
+  if (!made.mp4.empty()) fmt::print("video: {}\n", made.mp4.string());
+  if (!made.gif.empty()) fmt::print("gif: {}\n", made.gif.string());
   std::fflush(stdout);
   return summary.failures.empty() ? exit_code::ok : exit_code::failed;
 }
@@ -397,13 +381,17 @@ Command register_render_command(CLI::App& app) {
                   "final (adaptive antialiasing, full effects)")
       ->check(CLI::IsMember({"preview", "final"}));
   sub->add_flag("--mask", args->mask, "Also render rain masks (images/mask_NNNN.png)");
-  sub->add_flag("--force", args->force, "Re-render frames that are already up to date");
+  sub->add_flag("--force", args->force,
+                "Render every frame again; and replace a folder made from another scene or with "
+                "other settings (its frames and images are deleted), or write into a non-empty "
+                "folder raintrace did not make");
   sub->add_option("--backend", args->backend, "local (default) or slurm (one job array)")
       ->check(CLI::IsMember({"local", "slurm"}));
   sub->add_option("--partition", args->partition, "Slurm partition (default: the cluster's)");
   sub->add_option("--tasks", args->tasks, "Slurm array tasks (default: one per ~8 frames)")
       ->check(CLI::Range(1, 10000));
   sub->add_flag("--no-movie", args->no_movie, "Skip the MP4 and GIF");
+  add_limit_options(*sub, args->limits);
   sub->add_option("--slurm-task", args->slurm_task, "Worker mode inside a Slurm array task")
       ->group("");
   return {

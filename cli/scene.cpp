@@ -1,8 +1,9 @@
-// The scene file → Scene (sim::SimParams + povgen::ExportParams). Each section is read by one
-// function below; a key absent from the file keeps the params struct's default member value, so
-// defaults live in one place. The format, with every key, unit and range, is in
-// docs/scene-format.md; the ranges here follow the `///` comments of sim/params.h,
-// sim/camera.h and povgen/export_params.h.
+// The scene file → Scene (sim::SimParams + povgen::ExportParams). Every key is a row of a
+// parameter table (sim/param_table.h) beside the struct it fills; scene_tables.h lists the
+// tables. This file walks them section by section: each row is read with its type and range,
+// order rules between keys are checked once their section is read, and the few rules that are
+// not a range (the camera's direction, the gust direction, the environment include) follow.
+// A key absent from the file keeps its struct's default member value.
 //
 //   seed = 7
 //   [output]   frames = 48   fps = 24   width = 640   height = 360   quality = "preview"
@@ -14,174 +15,123 @@
 #include <cmath>
 #include <fstream>
 #include <glm/geometric.hpp>
-#include <iterator>
-#include <limits>
+#include <span>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 #include <system_error>
+#include <type_traits>
+#include <variant>
 
 #include "cli/scene_document.h"
 #include "cli/scene_error.h"
 #include "cli/scene_include.h"
 #include "cli/scene_reader.h"
+#include "cli/scene_tables.h"
 
 namespace raintrace::cli {
 namespace {
 
-/// Positions are metres from the origin; beyond 100 km single-precision drop coordinates in
-/// the frame and POV-Ray's own precision stop resolving millimetre drops.
-const Range kCoordinate = Range::closed(-1e5, 1e5);
-const Range kUnit = Range::closed(0.0, 1.0);
-
-void read_output(TableReader r, Scene& scene) {
-  r.read_integer("frames", scene.frames, 1, 100000);
-  r.read_number("fps", scene.look.fps, Range::open_closed(0.0, 240.0));
-  r.read_integer("width", scene.look.width, 16, 8192);
-  r.read_integer("height", scene.look.height, 16, 8192);
-  r.read_enum("quality", scene.look.quality,
-              {{"preview", povgen::Quality::preview}, {"final", povgen::Quality::final}});
-  r.finish();
+template <class P>
+void read_param(TableReader& r, const sim::Param<P>& row, P& object) {
+  std::visit(
+      [&](const auto& field) {
+        using Field = std::decay_t<decltype(field)>;
+        if constexpr (std::is_same_v<Field, double P::*>) {
+          r.read_number(row.key, object.*field, row.range);
+        } else if constexpr (std::is_same_v<Field, int P::*>) {
+          r.read_integer(row.key, object.*field, static_cast<int>(row.range.min),
+                         static_cast<int>(row.range.max));
+        } else if constexpr (std::is_same_v<Field, std::uint64_t P::*>) {
+          r.read_unsigned(row.key, object.*field);
+        } else if constexpr (std::is_same_v<Field, bool P::*>) {
+          r.read_bool(row.key, object.*field);
+        } else if constexpr (std::is_same_v<Field, glm::dvec3 P::*>) {
+          r.read_vec3(row.key, object.*field, row.range);
+        } else if constexpr (std::is_same_v<Field, std::string P::*>) {
+          r.read_string(row.key, object.*field);
+        } else {
+          static_assert(std::is_same_v<Field, sim::ChoiceField<P>>);
+          if (const auto index = r.read_choice(row.key, field.names)) {
+            field.set(object, field.names, *index);
+          }
+        }
+      },
+      row.field);
 }
 
-void read_camera(TableReader r, sim::Camera& camera, double& aperture_m) {
-  r.read_vec3("position", camera.position, kCoordinate);
-  r.read_vec3("look_at", camera.look_at, kCoordinate);
-  r.read_number("fov_deg", camera.fov_deg, Range::open(1.0, 170.0));
-  r.read_number("exposure_s", camera.exposure_s, Range::closed(0.0, 1.0));
-  r.read_number("aperture_m", aperture_m, Range::closed(0.0, 1.0));
-  const glm::dvec3 view = camera.look_at - camera.position;
-  if (glm::length(view) < 1e-6) {
+/// Reads the rows of `table` in the reader's section into `object`, then checks their order
+/// rules, blaming the later of the two keys when the file has it.
+template <class P>
+void read_params(TableReader& r, std::span<const sim::Param<P>> table, P& object) {
+  for (const sim::Param<P>& row : table) {
+    if (row.section == r.section_name()) read_param(r, row, object);
+  }
+  for (const sim::Param<P>& row : table) {
+    if (row.section != r.section_name() || row.order == sim::Order::none) continue;
+    const sim::Param<P>& other = *sim::find_param(table, row.section, row.other);
+    const double value = sim::number_value(row, object);
+    const double other_value = sim::number_value(other, object);
+    const sim::OrderWords words = sim::order_words(row.order, value, other_value);
+    if (words.holds) continue;
+    const std::string_view later = &row > &other ? row.key : other.key;
+    const std::string_view earlier = &row > &other ? other.key : row.key;
+    r.fail(r.where(later) ? later : earlier,
+           fmt::format("{} must be {} {}, got {} {} {}", r.full_key(row.key), words.wanted,
+                       r.full_key(other.key), value, words.got, other_value));
+  }
+}
+
+/// Where to blame a camera problem: look_at when the file gives it, else position.
+std::string_view camera_key(const TableReader& r) {
+  return r.where("look_at") ? "look_at" : "position";
+}
+
+void check_camera(const TableReader& r, const sim::Camera& camera) {
+  if (!sim::has_view_direction(camera)) {
     r.fail(
-        r.where("look_at") ? "look_at" : "position",
+        camera_key(r),
         fmt::format("must differ from camera.position and camera.look_at (both are [{}, {}, {}])",
                     camera.position.x, camera.position.y, camera.position.z));
   }
   // POV-Ray's camera keeps +y up (sky); looking straight up or down leaves it no right vector.
-  if (std::hypot(view.x, view.z) < 1e-6 * glm::length(view)) {
-    r.fail(r.where("look_at") ? "look_at" : "position",
+  if (sim::looks_straight_up_or_down(camera)) {
+    r.fail(camera_key(r),
            "must not lie straight above or below camera.position (the camera keeps +y up)");
   }
-  r.finish();
 }
 
-void read_rain(TableReader r, sim::RainParams& rain) {
-  r.read_number("rate_mm_per_h", rain.rate_mm_per_h, Range::closed(0.0, 500.0));
-  r.read_enum("distribution", rain.distribution,
-              {{"marshall-palmer", sim::DropSizeDistribution::marshall_palmer},
-               {"uniform", sim::DropSizeDistribution::uniform}});
-  r.read_number("diameter_min_mm", rain.diameter_min_mm, Range::closed(0.1, 8.0));
-  r.read_number("diameter_max_mm", rain.diameter_max_mm, Range::closed(0.1, 8.0));
-  if (rain.diameter_min_mm > rain.diameter_max_mm) {
-    r.fail(r.where("diameter_max_mm") ? "diameter_max_mm" : "diameter_min_mm",
-           fmt::format("rain.diameter_min_mm must be <= rain.diameter_max_mm, got {} > {}",
-                       rain.diameter_min_mm, rain.diameter_max_mm));
+/// The gust direction's horizontal part, normalised (y is ignored).
+void normalise_gust_direction(const TableReader& r, sim::WindParams& wind) {
+  if (!r.where("gust_direction")) return;
+  glm::dvec3& direction = wind.gust_direction;
+  if (!sim::is_horizontal_direction(direction)) {
+    r.fail("gust_direction", "must point somewhere horizontally (x or z not 0; y is ignored)");
   }
-  r.read_number("near_m", rain.near_m, Range::open(0.0, 1000.0));
-  r.read_number("far_m", rain.far_m, Range::open_closed(0.0, 1000.0));
-  if (rain.far_m <= rain.near_m) {
-    r.fail(r.where("far_m") ? "far_m" : "near_m",
-           fmt::format("rain.far_m must be > rain.near_m, got {} <= {}", rain.far_m, rain.near_m));
+  const double horizontal = std::hypot(direction.x, direction.z);
+  direction = {direction.x / horizontal, 0.0, direction.z / horizontal};
+}
+
+void check_include(const TableReader& r, povgen::EnvironmentParams& environment,
+                   const std::filesystem::path& base_dir) {
+  if (!r.where("include")) return;
+  try {
+    environment.include_path =
+        validate_include_path(environment.include_path, base_dir).generic_string();
+  } catch (const std::invalid_argument& e) {
+    r.fail("include", e.what());
   }
-  r.read_number("ceiling_margin_m", rain.ceiling_margin_m, Range::closed(0.0, 1000.0));
-  r.read_bool("merging", rain.merging);
-  r.read_number("breakup_diameter_mm", rain.breakup_diameter_mm, Range::closed(4.0, 10.0));
-  r.read_number("vanishing_rate_per_s", rain.vanishing_rate_per_s, Range::closed(0.0, 100.0));
-  r.read_vec3("colour", rain.colour, kUnit);
-  r.finish();
 }
 
-void read_wind(TableReader r, sim::WindParams& wind) {
-  r.read_vec3("velocity_m_per_s", wind.velocity_m_per_s, Range::closed(-60.0, 60.0));
-  r.read_bool("gusts", wind.gusts);
-  r.read_number("gust_strength", wind.gust_strength, Range::closed(0.0, 500.0));
-  glm::dvec3 direction = wind.gust_direction;
-  if (r.read_vec3("gust_direction", direction, Range::closed(-1000.0, 1000.0))) {
-    const double horizontal = std::hypot(direction.x, direction.z);
-    if (horizontal < 1e-9) {
-      r.fail("gust_direction", "must point somewhere horizontally (x or z not 0; y is ignored)");
-    }
-    wind.gust_direction = {direction.x / horizontal, 0.0, direction.z / horizontal};
-  }
-  r.read_number("turbulence_m_per_s", wind.turbulence_m_per_s, Range::closed(0.0, 30.0));
-  r.read_number("turbulence_scale_m", wind.turbulence_scale_m, Range::closed(0.1, 100.0));
-  r.finish();
-}
-
-void read_splashes(TableReader r, sim::SplashParams& splashes) {
-  r.read_bool("enabled", splashes.enabled);
-  r.read_integer("droplets", splashes.droplets, 0, 32);
-  r.read_number("lifetime_s", splashes.lifetime_s, Range::open_closed(0.0, 2.0));
-  r.finish();
-}
-
-void read_lightning(TableReader r, sim::LightningParams& lightning, double& light) {
-  r.read_bool("enabled", lightning.enabled);
-  r.read_number("strikes_per_minute", lightning.strikes_per_minute, Range::closed(0.0, 600.0));
-  r.read_integer("generations", lightning.generations, 1, 8);
-  r.read_number("cloud_height_m", lightning.cloud_height_m, Range::closed(10.0, 5000.0));
-  r.read_number("azimuth_deg", lightning.azimuth_deg, Range::closed(-180.0, 180.0));
-  r.read_number("azimuth_spread_deg", lightning.azimuth_spread_deg, Range::closed(0.0, 180.0));
-  r.read_number("distance_m", lightning.distance_m, Range::closed(0.0, 10000.0));
-  r.read_number("distance_min_m", lightning.distance_min_m, Range::closed(0.0, 10000.0));
-  r.read_number("distance_max_m", lightning.distance_max_m, Range::closed(0.0, 10000.0));
-  if (lightning.distance_min_m > lightning.distance_max_m) {
-    r.fail(r.where("distance_max_m") ? "distance_max_m" : "distance_min_m",
-           fmt::format("lightning.distance_min_m must be <= lightning.distance_max_m, got {} > {}",
-                       lightning.distance_min_m, lightning.distance_max_m));
-  }
-  r.read_number("trunk_radius_m", lightning.trunk_radius_m, Range::open_closed(0.0, 10.0));
-  r.read_integer("return_strokes", lightning.return_strokes, 1, 10);
-  r.read_number("flash_duration_s", lightning.flash_duration_s, Range::closed(0.05, 2.0));
-  // Negative means "no forced strike"; the upper bound only keeps the number sane.
-  r.read_number("first_strike_s", lightning.first_strike_s,
-                Range{-std::numeric_limits<double>::infinity(), 1e6});
-  r.read_number("light", light, Range::closed(0.0, 100.0));
-  r.finish();
-}
-
-void read_fog(TableReader r, povgen::FogParams& fog) {
-  r.read_enum("mode", fog.mode,
-              {{"off", povgen::FogMode::off},
-               {"ground", povgen::FogMode::ground},
-               {"media", povgen::FogMode::media}});
-  r.read_number("depth_m", fog.depth_m, Range::open_closed(0.0, 1000.0));
-  r.read_number("density_per_m", fog.density_per_m, Range::closed(0.0, 5.0));
-  r.read_vec3("colour", fog.colour, kUnit);
-  r.finish();
-}
-
-void read_environment(TableReader r, povgen::EnvironmentParams& environment,
-                      const std::filesystem::path& base_dir) {
-  std::string name;
-  if (r.read_enum("name", name,
-                  {{"night_street", "night_street"}, {"field", "field"}, {"closeup", "closeup"}})) {
-    environment.name = name;
-  }
-  std::string include;
-  if (r.read_string("include", include)) {
-    try {
-      environment.include_path = validate_include_path(include, base_dir).generic_string();
-    } catch (const std::invalid_argument& e) {
-      r.fail("include", e.what());
-    }
-  }
-  r.finish();
-}
-
-void read_export(TableReader r, povgen::ExportParams& look) {
-  r.read_number("sphere_distance_m", look.sphere_distance_m, Range::closed(0.0, 1000.0));
-  r.read_number("min_streak_coverage", look.min_streak_coverage, Range::closed(0.0, 1.0));
-  r.read_number("splash_keep", look.splash_keep, Range::open_closed(0.0, 1.0));
-  r.read_bool("environment_plate", look.environment_plate);
-  r.read_bool("mask", look.mask);
-  r.finish();
-}
-
-void read_simulation(TableReader r, sim::SimParams& sim) {
-  r.read_number("substep_s", sim.substep_s, Range::closed(1e-4, 0.02));
-  r.read_number("prewarm_s", sim.prewarm_s, Range::closed(0.0, 60.0));
-  r.read_number("ground_y_m", sim.ground_y_m, kCoordinate);
-  r.finish();
+/// Reads one section: the rows of every table in it, then the rules that are not a range.
+void read_section(TableReader& r, Scene& scene) {
+  for_each_table(scene, [&](auto table, auto& object) {
+    read_params<std::remove_cvref_t<decltype(object)>>(r, table, object);
+  });
+  const std::string& section = r.section_name();
+  if (section == "camera") check_camera(r, scene.sim.camera);
+  if (section == "wind") normalise_gust_direction(r, scene.sim.wind);
+  if (section == "environment") check_include(r, scene.look.environment, scene.base_dir);
 }
 
 }  // namespace
@@ -195,17 +145,15 @@ Scene load_scene_string(std::string_view toml_text, const std::string& source_na
   const SceneNode document = parse_scene_document(toml_text, source_name);
 
   TableReader root(document, "", source_name);
-  root.read_unsigned("seed", scene.sim.seed);
-  read_output(root.section("output"), scene);
-  read_camera(root.section("camera"), scene.sim.camera, scene.look.aperture_m);
-  read_rain(root.section("rain"), scene.sim.rain);
-  read_wind(root.section("wind"), scene.sim.wind);
-  read_splashes(root.section("splashes"), scene.sim.splashes);
-  read_lightning(root.section("lightning"), scene.sim.lightning, scene.look.lightning_light);
-  read_fog(root.section("fog"), scene.look.fog);
-  read_environment(root.section("environment"), scene.look.environment, base_dir);
-  read_export(root.section("export"), scene.look);
-  read_simulation(root.section("simulation"), scene.sim);
+  for (const std::string_view section : kSections) {
+    if (section.empty()) {
+      read_section(root, scene);
+      continue;
+    }
+    TableReader reader = root.section(section);
+    read_section(reader, scene);
+    reader.finish();
+  }
   root.finish();
 
   scene.sim.camera.aspect = static_cast<double>(scene.look.width) / scene.look.height;

@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "povgen/export_params.h"
+#include "sim/param_table.h"
 #include "sim/params.h"
 
 namespace raintrace::cli {
@@ -24,9 +25,14 @@ struct Scene {
   /// Folder that look.environment.include_path is relative to: the scene file's folder (or the
   /// base_dir given to load_scene_string). Added by the cli owner.
   std::filesystem::path base_dir;
-  int frames = 48;     ///< [output] frames, in [1, 100000]
+  int frames = 48;     ///< length of the animation
   sim::SimParams sim;  ///< camera is filled identically in sim and look
   povgen::ExportParams look;
+};
+
+/// Scene's own key; the others are in the tables of sim/ and povgen/ (scene_tables.h).
+inline constexpr sim::Param<Scene> kSceneParams[] = {
+    sim::integer("output", "frames", &Scene::frames, "frames", 1, 100000),
 };
 
 /// Reads and validates a scene file. Throws SceneError (also for a missing/unreadable file).

@@ -26,6 +26,10 @@ std::string escaped(std::string_view text) {
   return out;
 }
 
+std::string shortened(std::string_view text, std::size_t max_chars) {
+  return text.size() > max_chars ? escaped(text.substr(0, max_chars)) + "…" : escaped(text);
+}
+
 std::string in_quotes(std::string_view text, std::size_t max_chars) {
   const bool cut = text.size() > max_chars;
   std::string out = "\"";
@@ -39,11 +43,11 @@ std::string in_quotes(std::string_view text, std::size_t max_chars) {
 
 std::string scene_error_text(std::string_view source, SourceLocation where, std::string_view key,
                              std::string_view message) {
-  std::string out = escaped(source);
+  std::string out = shortened(source, 200);
   if (where.line > 0) out += fmt::format(":{}:{}", where.line, where.column);
   out += ": ";
   if (!key.empty()) {
-    out += escaped(key);
+    out += shortened(key, 80);
     out += ": ";
   }
   for (const char c : message) out += (c == '\n' || c == '\r') ? ' ' : c;

@@ -14,12 +14,16 @@ namespace raintrace::cli {
 /// `text` with every byte outside printable ASCII written as \n, \t, \\ or \xNN.
 std::string escaped(std::string_view text);
 
-/// `text` escaped, in double quotes, cut to max_chars characters of input with "…" after.
+/// `text` escaped, cut to max_chars bytes of input with "…" after: how anything a user wrote is
+/// quoted in a message (a 15 MB key must not be echoed whole).
+std::string shortened(std::string_view text, std::size_t max_chars = 60);
+
+/// shortened(text, max_chars) in double quotes (a quote inside is escaped).
 std::string in_quotes(std::string_view text, std::size_t max_chars = 60);
 
 /// "SOURCE:LINE:COL: KEY: message" (the location part shrinks to "SOURCE:" when unknown and
-/// the key part disappears when `key` is empty). SOURCE and KEY are escaped; message is taken
-/// as is but any line break in it becomes a space.
+/// the key part disappears when `key` is empty). SOURCE and KEY are escaped and shortened (to 200
+/// and 80 bytes); message is taken as is but any line break in it becomes a space.
 std::string scene_error_text(std::string_view source, SourceLocation where, std::string_view key,
                              std::string_view message);
 

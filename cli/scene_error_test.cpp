@@ -23,6 +23,15 @@ TEST(SceneErrorText, StaysOnOneLineWhateverTheInput) {
   EXPECT_EQ(text, "a\\nb.toml:1:2: k\\ney: two lines ");
 }
 
+TEST(SceneErrorText, AHugeKeyOrFileNameIsCutNotEchoedWhole) {
+  // A 15 MB unknown key used to come back whole in the error line.
+  const std::string key(15'000'000, 'x');
+  const std::string text = scene_error_text("a.toml", {2, 1}, "rain." + key, "unknown key");
+  EXPECT_LT(text.size(), 200U);
+  EXPECT_EQ(text, "a.toml:2:1: rain." + std::string(75, 'x') + "…: unknown key");
+  EXPECT_LT(scene_error_text(std::string(100000, 'f'), {}, "", "cannot read").size(), 300U);
+}
+
 TEST(Escaped, WritesControlAndNonAsciiBytesAsEscapes) {
   // ESC (0x1b) would start a terminal control sequence; é is two UTF-8 bytes c3 a9.
   EXPECT_EQ(escaped("a\x1b[31mb\t\\\xc3\xa9"), "a\\x1b[31mb\\t\\\\\\xc3\\xa9");

@@ -34,7 +34,7 @@ std::string describe_value(const SceneNode& node) {
   return "a " + node.string;
 }
 
-std::string join_quoted(const std::vector<std::string_view>& names) {
+std::string join_quoted(std::span<const std::string_view> names) {
   std::string out;
   for (const auto& name : names) {
     if (!out.empty()) out += ", ";
@@ -49,23 +49,6 @@ const SceneNode& empty_table() {
 }
 
 }  // namespace
-
-bool Range::contains(double value) const {
-  const bool above_min = min_open ? value > min : value >= min;
-  const bool below_max = max_open ? value < max : value <= max;
-  return above_min && below_max;
-}
-
-std::string Range::describe() const {
-  const bool has_min = std::isfinite(min);
-  const bool has_max = std::isfinite(max);
-  if (has_min && has_max) {
-    return fmt::format("in {}{}, {}{}", min_open ? '(' : '[', min, max, max_open ? ')' : ']');
-  }
-  if (has_min) return fmt::format("{} {}", min_open ? ">" : ">=", min);
-  if (has_max) return fmt::format("{} {}", max_open ? "<" : "<=", max);
-  return "finite";
-}
 
 std::size_t edit_distance(std::string_view a, std::string_view b) {
   // Optimal string alignment distance: Levenshtein plus adjacent transpositions, so that
@@ -240,7 +223,7 @@ bool TableReader::read_vec3(std::string_view key, glm::dvec3& out, const Range& 
 }
 
 std::optional<std::size_t> TableReader::read_choice(std::string_view key,
-                                                    const std::vector<std::string_view>& names) {
+                                                    std::span<const std::string_view> names) {
   const SceneNode* node = find(key);
   if (node == nullptr) return std::nullopt;
   if (node->kind == SceneNode::Kind::string) {

@@ -7,35 +7,19 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/vec3.hpp>
-#include <initializer_list>
-#include <limits>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
-#include <utility>
 #include <vector>
 
 #include "cli/scene_document.h"
+#include "sim/param_table.h"
 
 namespace raintrace::cli {
 
-/// The valid values of a number. An infinite bound means "no bound on this side".
-struct Range {
-  double min = -std::numeric_limits<double>::infinity();
-  double max = std::numeric_limits<double>::infinity();
-  bool min_open = false;  ///< min itself is excluded
-  bool max_open = false;  ///< max itself is excluded
-
-  static Range closed(double lo, double hi) { return {lo, hi, false, false}; }
-  static Range open_closed(double lo, double hi) { return {lo, hi, true, false}; }
-  static Range open(double lo, double hi) { return {lo, hi, true, true}; }
-  static Range at_least(double lo) { return {lo, std::numeric_limits<double>::infinity()}; }
-  static Range any() { return {}; }
-
-  [[nodiscard]] bool contains(double value) const;
-  /// "in [0, 500]", "in (0, 240]", ">= 0", "> 0": the words after "must be".
-  [[nodiscard]] std::string describe() const;
-};
+/// The valid values of a number (the parameter tables' type).
+using Range = sim::Range;
 
 /// Edit distance (Levenshtein, ASCII case folded) between two names.
 std::size_t edit_distance(std::string_view a, std::string_view b);
@@ -59,17 +43,9 @@ class TableReader {
   /// An array of exactly three numbers, each in `each`.
   bool read_vec3(std::string_view key, glm::dvec3& out, const Range& each);
 
-  /// A string that must be one of `choices`; stores the matching value.
-  template <class Enum>
-  bool read_enum(std::string_view key, Enum& out,
-                 std::initializer_list<std::pair<std::string_view, Enum>> choices) {
-    std::vector<std::string_view> names;
-    for (const auto& choice : choices) names.push_back(choice.first);
-    const std::optional<std::size_t> index = read_choice(key, names);
-    if (!index) return false;
-    out = (choices.begin() + *index)->second;
-    return true;
-  }
+  /// A string that must be one of `names`: its index in names.
+  std::optional<std::size_t> read_choice(std::string_view key,
+                                         std::span<const std::string_view> names);
 
   /// Reader over the sub-table `key` (a [section]); over an empty table when it is absent.
   TableReader section(std::string_view key);
@@ -84,14 +60,14 @@ class TableReader {
   void finish() const;
 
   [[nodiscard]] const std::string& source() const { return m_source; }
+  /// The section read ("rain"), empty at the top level.
+  [[nodiscard]] const std::string& section_name() const { return m_section; }
   /// "rain.rate_mm_per_h" for key "rate_mm_per_h".
   [[nodiscard]] std::string full_key(std::string_view key) const;
 
  private:
   /// Marks `key` as known and returns its value, or nullptr when absent.
   const SceneNode* find(std::string_view key);
-  std::optional<std::size_t> read_choice(std::string_view key,
-                                         const std::vector<std::string_view>& names);
   /// A number from an integer or a float node; throws when it is neither, or not finite.
   double number_of(const SceneNode& node, const std::string& key) const;
   [[noreturn]] void fail_at(SourceLocation where, const std::string& key,

@@ -73,18 +73,24 @@ Metrics compute_metrics(const Image& a, const Image& b, const Thresholds& t) {
   double total = 0.0, total_sq = 0.0;
   for (int y = 0; y < a.height; ++y) {
     for (int x = 0; x < a.width; ++x) {
-      bool warned = false, failed = false;
+      bool warned = false, failed = false, nonfinite = false;
       const float* pa = &a.pixels[(std::size_t(y) * a.width + x) * nc];
       const float* pb = &b.pixels[(std::size_t(y) * a.width + x) * nc];
       for (int c = 0; c < nc; ++c) {
         const double va = pa[c], vb = pb[c];
-        double e;
+        double e = std::abs(va - vb);
         if (!std::isfinite(va) || !std::isfinite(vb)) {
           const bool same = (std::isnan(va) && std::isnan(vb)) || (std::isinf(va) && va == vb);
           if (same) continue;
+          // Summed as they are (NaN, or Inf against a number: idiff's mean and RMS error then
+          // read nan or inf too), but as an error this value is infinitely wrong: it is the
+          // largest error, and it fails and warns whatever the thresholds.
+          nonfinite = true;
+          total += e;
+          total_sq += e * e;
           e = std::numeric_limits<double>::infinity();
+          warned = failed = true;
         } else {
-          e = std::abs(va - vb);
           total += e;
           total_sq += e * e;
         }
@@ -100,6 +106,7 @@ Metrics compute_metrics(const Image& a, const Image& b, const Thresholds& t) {
       }
       m.warn_pixels += warned;
       m.fail_pixels += failed;
+      m.nonfinite_pixels += nonfinite;
     }
   }
   const double values = double(m.pixels) * nc;
@@ -107,12 +114,15 @@ Metrics compute_metrics(const Image& a, const Image& b, const Thresholds& t) {
     m.mean_error = total / values;
     m.rmse = std::sqrt(total_sq / values);
   }
-  m.psnr = m.rmse > 0.0 ? 20.0 * std::log10(1.0 / m.rmse) : std::numeric_limits<double>::infinity();
+  // RMSE 0 → +inf; Inf → −inf; NaN stays NaN.
+  m.psnr =
+      m.rmse == 0.0 ? std::numeric_limits<double>::infinity() : 20.0 * std::log10(1.0 / m.rmse);
   if (m.pixels > 0) {
     m.warn_percent = 100.0 * double(m.warn_pixels) / double(m.pixels);
     m.fail_percent = 100.0 * double(m.fail_pixels) / double(m.pixels);
   }
-  m.ssim = ssim(a, b);
+  // SSIM would quietly treat the non-finite values as 0: with any of them it is undefined.
+  m.ssim = m.nonfinite_pixels > 0 ? std::numeric_limits<double>::quiet_NaN() : ssim(a, b);
   m.verdict = judge(m, t);
   return m;
 }

@@ -45,31 +45,39 @@ enum class Verdict { pass, warn, fail };
 const char* to_string(Verdict verdict);  ///< "PASS", "WARN", "FAIL"
 
 struct Metrics {
-  /// Mean of |a − b| over all values (pixels × channels), as ImageBufAlgo::compare's meanerror.
+  /// Mean of |a − b| over all values (pixels × channels), as ImageBufAlgo::compare's meanerror;
+  /// NaN or +Inf when non-finite values differ (nonfinite_pixels), as idiff reports it.
   double mean_error = 0.0;
   /// Largest |a − b| of any value; +infinity when one side is NaN/Inf and the other is not.
   double max_error = 0.0;
   int max_x = 0;  ///< pixel column of the largest error (first in scan order on ties)
   int max_y = 0;  ///< pixel row of the largest error, 0 = top
   int max_c = 0;  ///< channel index of the largest error
-  /// sqrt(mean of (a − b)² over all values), as ImageBufAlgo::compare's rms_error.
+  /// sqrt(mean of (a − b)² over all values), as ImageBufAlgo::compare's rms_error; NaN or
+  /// +Inf like mean_error.
   double rmse = 0.0;
-  /// 20 · log10(1 / rmse) dB for a peak value of 1 (OIIO's PSNR); +infinity when rmse == 0.
+  /// 20 · log10(1 / rmse) dB for a peak value of 1 (OIIO's PSNR); +infinity when rmse == 0,
+  /// −infinity when it is infinite, NaN when it is NaN.
   double psnr = std::numeric_limits<double>::infinity();
-  /// Mean SSIM of the luminance (see ssim.h); 1 for identical images.
+  /// Mean SSIM of the luminance (see ssim.h); 1 for identical images; NaN (undefined) when
+  /// non-finite values differ.
   double ssim = 1.0;
   std::size_t pixels = 0;       ///< width × height
   std::size_t warn_pixels = 0;  ///< pixels with at least one warning value
   std::size_t fail_pixels = 0;  ///< pixels with at least one failing value
   double warn_percent = 0.0;    ///< 100 · warn_pixels / pixels
   double fail_percent = 0.0;    ///< 100 · fail_pixels / pixels
+  /// Pixels where a NaN or ±Inf on one side meets a different value on the other. Each fails
+  /// and warns whatever the thresholds (an infinitely wrong value), and makes mean_error, rmse,
+  /// psnr and ssim non-finite: nothing about such an image reads as "close".
+  std::size_t nonfinite_pixels = 0;
   Verdict verdict = Verdict::pass;
 };
 
 /// Compares a (reference) with b (candidate). Both must have the same width, height and channel
 /// count, else std::invalid_argument with both sizes. Values that are NaN or ±Inf on both sides
 /// in the same way count as equal; a non-finite value against anything else is an infinite
-/// error (it fails and warns), and is left out of mean and RMSE as ImageBufAlgo::compare does.
+/// error: it fails and warns, and mean, RMSE, PSNR and SSIM report it (nonfinite_pixels).
 Metrics compute_metrics(const Image& a, const Image& b, const Thresholds& thresholds = {});
 
 /// The image verdict of `metrics` under `thresholds` (the rule on Thresholds).

@@ -154,12 +154,41 @@ TEST(Metrics, MatchingNonFiniteValuesAreEqualMismatchedOnesFail) {
   Metrics m = compute_metrics(a, b);
   EXPECT_EQ(m.max_error, 0.0);
   EXPECT_EQ(m.verdict, Verdict::pass);
+  EXPECT_EQ(m.nonfinite_pixels, 0u);
   b.at(1, 0, 0) = 0.5f;
   m = compute_metrics(a, b);
   EXPECT_TRUE(std::isinf(m.max_error));
   EXPECT_EQ(m.max_x, 1);
   EXPECT_EQ(m.fail_pixels, 1u);
-  EXPECT_TRUE(std::isfinite(m.mean_error));
+  EXPECT_EQ(m.nonfinite_pixels, 1u);
+  // Reported as such, as idiff does (mean and RMS error "inf"), never as a 0 that looks equal.
+  EXPECT_TRUE(std::isinf(m.mean_error) && m.mean_error > 0);
+  EXPECT_TRUE(std::isinf(m.rmse));
+  EXPECT_TRUE(std::isinf(m.psnr) && m.psnr < 0);
+  EXPECT_TRUE(std::isnan(m.ssim));
+  EXPECT_EQ(m.verdict, Verdict::fail);
+}
+
+TEST(Metrics, NanPixelsFailWithNanMetricsWhateverTheThresholds) {
+  // Before: FAIL with mean 0 and RMSE 0. (idiff 2.4 even says PASS with "Mean error = nan".)
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  Image a(4, 4, 3, 0.25f), b(4, 4, 3, 0.25f);
+  b.at(1, 1, 0) = nan;
+  b.at(2, 1, 2) = nan;
+  Thresholds loose;
+  loose.fail = loose.warn = 0.5;
+  loose.fail_relative = loose.warn_relative = 2.0;
+  const Metrics m = compute_metrics(a, b, loose);
+  EXPECT_EQ(m.nonfinite_pixels, 2u);
+  EXPECT_EQ(m.fail_pixels, 2u);
+  EXPECT_EQ(m.warn_pixels, 2u);
+  EXPECT_TRUE(std::isnan(m.mean_error));
+  EXPECT_TRUE(std::isnan(m.rmse));
+  EXPECT_TRUE(std::isnan(m.psnr));
+  EXPECT_TRUE(std::isinf(m.max_error));
+  EXPECT_EQ(m.max_x, 1);
+  EXPECT_EQ(m.max_y, 1);
+  EXPECT_EQ(m.verdict, Verdict::fail);
 }
 
 TEST(Metrics, ValidateRejectsNegativeAndOutOfRange) {

@@ -36,7 +36,8 @@ std::string figure(const std::string& caption, const std::string& href, const st
 }
 
 std::string num(double v, const char* spec = "{:.6g}") {
-  return std::isinf(v) ? std::string("inf") : fmt::format(fmt::runtime(spec), v);
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  return fmt::format(fmt::runtime(spec), v);
 }
 
 constexpr const char* kStyle =

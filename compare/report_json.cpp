@@ -52,6 +52,8 @@ std::string to_json(const CompareReport& report) {
       frame["fail_pixels"] = m.fail_pixels;
       frame["warn_percent"] = m.warn_percent;
       frame["fail_percent"] = m.fail_percent;
+      // Why mean_error, rmse, psnr and ssim may be null: NaN or Inf meeting other values.
+      frame["nonfinite_pixels"] = m.nonfinite_pixels;
       passed += m.verdict == Verdict::pass;
       warned += m.verdict == Verdict::warn;
       failed += m.verdict == Verdict::fail;

@@ -11,7 +11,8 @@ namespace raintrace::compare {
 namespace {
 
 std::string psnr_text(double psnr) {
-  return std::isinf(psnr) ? std::string("inf") : fmt::format("{:.2f}", psnr);
+  if (std::isinf(psnr)) return psnr > 0 ? "inf" : "-inf";
+  return fmt::format("{:.2f}", psnr);
 }
 
 }  // namespace
@@ -37,6 +38,12 @@ std::string format_table(const CompareReport& report) {
                               : f.status == FrameStatus::missing_b ? "only in " + report.a.string()
                                                                    : f.error;
       out += fmt::format("{:<{}}  {}  ({})\n", f.name, name_width, verdict, why);
+    }
+  }
+  for (const auto& f : report.frames) {
+    if (f.status == FrameStatus::compared && f.metrics.nonfinite_pixels > 0) {
+      out += fmt::format("{}: {} pixel(s) hold NaN or Inf where the other image does not\n", f.name,
+                         f.metrics.nonfinite_pixels);
     }
   }
   const Thresholds& t = report.thresholds;

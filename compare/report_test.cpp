@@ -61,6 +61,23 @@ TEST(Report, JsonHasEveryNumberAndNullForInfinity) {
   EXPECT_TRUE(doc["thresholds"]["hard_fail"].is_null());
 }
 
+TEST(Report, NonFinitePixelsAreReportedAsSuch) {
+  CompareReport r = sample_report();
+  Metrics& m = r.frames[1].metrics;
+  m.nonfinite_pixels = 2;
+  m.mean_error = m.rmse = m.psnr = m.ssim = std::numeric_limits<double>::quiet_NaN();
+  m.max_error = std::numeric_limits<double>::infinity();
+  const auto doc = nlohmann::json::parse(to_json(r));
+  EXPECT_EQ(doc["frames"][1]["nonfinite_pixels"], 2);
+  EXPECT_TRUE(doc["frames"][1]["mean_error"].is_null());
+  EXPECT_EQ(doc["frames"][0]["nonfinite_pixels"], 0);
+  const std::string table = format_table(r);
+  EXPECT_NE(table.find("nan"), std::string::npos) << table;
+  EXPECT_NE(table.find("frame_<2>.png: 2 pixel(s) hold NaN or Inf where the other image does not"),
+            std::string::npos)
+      << table;
+}
+
 TEST(Report, TableHasOneAlignedRowPerFrameAndASummary) {
   const std::string table = format_table(sample_report());
   std::vector<std::string> lines;

@@ -1,16 +1,19 @@
 // libFuzzer target on the scene loader's string entry point (tinyobjloader's habit): any input
 // must either load or throw SceneError with a one-line message; anything else (a crash, a
 // sanitizer report, another exception type, a multi-line message, a loaded scene that breaks a
-// cross-field rule) is a bug.
+// cross-field rule or that the parameter tables' own checks refuse) is a bug.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 
 #include "cli/scene.h"
+#include "sim/param_table.h"
+#include "sim/params.h"
 
 namespace {
 
@@ -43,6 +46,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     require(scene.sim.lightning.distance_min_m <= scene.sim.lightning.distance_max_m);
     require(scene.sim.camera.position != scene.sim.camera.look_at);
     require(scene.look.camera.aspect == scene.sim.camera.aspect);
+    // What the reader accepts, the checks of params made in code accept too.
+    try {
+      raintrace::sim::validate(scene.sim);
+      raintrace::sim::check_params<raintrace::povgen::ExportParams>(
+          raintrace::povgen::kExportParams, scene.look);
+      raintrace::sim::check_params<raintrace::povgen::FogParams>(raintrace::povgen::kFogParams,
+                                                                 scene.look.fog);
+    } catch (const std::invalid_argument&) {
+      require(false);
+    }
     const std::string& include = scene.look.environment.include_path;
     require(include.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
                                       "0123456789_./-") == std::string::npos);

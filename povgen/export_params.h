@@ -1,12 +1,16 @@
-// What the exporter needs beyond the simulated frame: image, look, fog, environment.
-// cli/ fills it from the scene file; names arriving here are already validated by cli/ AND
-// re-checked by povgen before they touch POV-Ray text (defence in depth).
+// What the exporter needs beyond the simulated frame: image, look, fog, environment. Below
+// each struct, its parameter table (sim/param_table.h) gives every scene-file key its unit and
+// valid range; defaults are the member initialisers. cli/ fills these from the scene file;
+// values arriving here are already checked by cli/ AND re-checked by povgen (validate())
+// before they touch POV-Ray text (defence in depth).
 #pragma once
 
 #include <glm/vec3.hpp>
 #include <string>
+#include <string_view>
 
 #include "sim/camera.h"
+#include "sim/param_table.h"
 
 namespace raintrace::povgen {
 
@@ -15,27 +19,47 @@ enum class FogMode {
   ground,  ///< POV-Ray ground fog (fog_type 2): cheap
   media,   ///< scattering + absorbing media in a container (paper Fig. 3/4): Lambert-Beer
 };
+/// Scene-file names of FogMode, in the order of its values.
+inline constexpr std::string_view kFogModeNames[] = {"off", "ground", "media"};
 
 struct FogParams {
-  /// Default off.
   FogMode mode = FogMode::off;
-  /// Media: thickness of the foggy slab beyond the camera, metres, in (0, 1000]. Ground fog:
-  /// the height it rises to. Default 20.
+  /// Media: thickness of the foggy slab beyond the camera. Ground fog: the height it rises to.
   double depth_m = 20.0;
-  /// Extinction per metre (scattering + absorption), 1/m, in [0, 5]. Default 0.03.
+  /// Extinction per metre (scattering + absorption).
   double density_per_m = 0.03;
-  /// Linear RGB colour of the fog, each in [0, 1]. Default (0.6, 0.65, 0.7).
+  /// Linear RGB colour of the fog.
   glm::dvec3 colour{0.6, 0.65, 0.7};
 };
 
+/// [fog]
+inline constexpr sim::Param<FogParams> kFogParams[] = {
+    sim::choice<&FogParams::mode>("fog", "mode", kFogModeNames),
+    sim::number("fog", "depth_m", &FogParams::depth_m, "m", sim::Range::open_closed(0, 1000)),
+    sim::number("fog", "density_per_m", &FogParams::density_per_m, "1/m", sim::Range::closed(0, 5)),
+    sim::colour("fog", "colour", &FogParams::colour),
+};
+static_assert(sim::well_formed<FogParams>(kFogParams));
+
+/// The built-in environments of templates/ (templates.h gives their text).
+inline constexpr std::string_view kEnvironmentNames[] = {"night_street", "field", "closeup"};
+
 struct EnvironmentParams {
-  /// Built-in environment from templates/: "night_street", "field" or "closeup".
-  /// Default "night_street".
+  /// Built-in environment from templates/, one of kEnvironmentNames.
   std::string name = "night_street";
   /// A user's own POV-Ray include instead of a built-in, path relative to the scene file's
-  /// folder and inside it; empty = use `name`. Default empty.
+  /// folder and inside it; empty = use `name`. cli/scene_include.cpp checks it.
   std::string include_path;
 };
+
+/// [environment]
+inline constexpr sim::Param<EnvironmentParams> kEnvironmentParams[] = {
+    sim::choice<&EnvironmentParams::name>("environment", "name", kEnvironmentNames),
+    sim::text("environment", "include", &EnvironmentParams::include_path)
+        .with_note("see below")
+        .unset_as("none"),
+};
+static_assert(sim::well_formed<EnvironmentParams>(kEnvironmentParams));
 
 enum class Quality {
   /// No antialiasing, and scene.inc declares RT_Preview=1 so environments use cheaper
@@ -43,41 +67,40 @@ enum class Quality {
   /// reflections): quick looks, tests and the throughput benchmark.
   preview,
   final,  ///< adaptive antialiasing (method 1, no jitter), RT_Preview=0: the full scene
-
 };
+/// Scene-file names of Quality, in the order of its values.
+inline constexpr std::string_view kQualityNames[] = {"preview", "final"};
 
 struct ExportParams {
   sim::Camera camera;
-  /// Diameter of the lens opening, metres, in [0, 1]. 0 (the default) is a pinhole: everything
-  /// sharp. Otherwise the camera focuses on camera.look_at and blurs the rest (POV-Ray focal
-  /// blur): a point at distance d, the focus at f, spreads over a disc of aperture_m·|d − f|/d
-  /// at the plane of focus.
+  /// Diameter of the lens opening; 0 is a pinhole: everything sharp. Otherwise the camera
+  /// focuses on camera.look_at and blurs the rest (POV-Ray focal blur): a point at distance d,
+  /// the focus at f, spreads over a disc of aperture_m·|d − f|/d at the plane of focus.
   double aperture_m = 0.0;
-  /// Image size in pixels, each in [16, 8192]. Default 640×360.
+  /// Image size.
   int width = 640;
   int height = 360;
-  /// Frames per second of the animation, in (0, 240]. Default 24.
+  /// Frames per second of the animation.
   double fps = 24.0;
   Quality quality = Quality::preview;
-  /// Drops nearer than this are refractive spheres, farther ones streak quads, metres, >= 0.
-  /// Default 3.
+  /// Drops nearer than this are refractive spheres, farther ones streak quads.
   double sphere_distance_m = 3.0;
-  /// Level of detail for far rain, as a share of one pixel, in [0, 1]. A streak's coverage is
+  /// Level of detail for far rain, as a share of one pixel. A streak's coverage is
   /// the share of a pixel's light its drop would block: opacity × drop width / pixel width
   /// (× length / pixel when shorter than a pixel). A streak below this coverage adds a barely
   /// measurable tint to its pixels yet costs POV-Ray a ray hit per pixel it crosses, so it is
   /// kept with probability coverage / min_streak_coverage (keyed by the drop's id: the same
   /// drops stay from frame to frame) and drawn at min_streak_coverage: the expected light of
   /// the far field is unchanged, carried by fewer, brighter streaks. 0 keeps every streak.
-  /// Default 1: every streak fainter than a full pixel is thinned (the heavy-rain example
+  /// The default, 1, thins every streak fainter than a full pixel (the heavy-rain example
   /// halves its streaks against 0.5 and its mean brightness moves by under 0.3/255).
   double min_streak_coverage = 1.0;
-  /// Level of detail for splashes: the share of splash droplets written, in (0, 1]. Each
+  /// Level of detail for splashes: the share of splash droplets written. Each
   /// droplet is kept or dropped by a key made of what stays constant over its flight (its
   /// horizontal velocity and size), so a droplet never blinks in and out; the survivors are
   /// drawn 1/√splash_keep wider, which keeps the total area the splashes cover. Droplets are
   /// glints of a few pixels that cost POV-Ray a sphere each (heavy rain throws ~30 k per
-  /// frame). 1 writes every droplet. Default 0.5.
+  /// frame). 1 writes every droplet.
   double splash_keep = 0.5;
   /// At quality preview, let frames draw the environment plate: a picture of the environment
   /// without rain, rendered once (plate.ini → textures/environment_plate.png), placed behind the
@@ -85,15 +108,40 @@ struct ExportParams {
   /// stay in the frame to light the rain. Applies to night_street and field without fog
   /// (environment_plate_applies()); frames with lightning trace the full environment. What it
   /// leaves out: the rain's reflection in the wet street, and scenery in front of rain that lies
-  /// behind it (none within ~7 m of night_street's default camera). Default true.
+  /// behind it (none within ~7 m of night_street's default camera).
   bool environment_plate = true;
-  /// Also write a rain mask scene per frame (rain white on black). Default false.
+  /// Also write a rain mask scene per frame (rain white on black).
   bool mask = false;
   FogParams fog;
   EnvironmentParams environment;
-  /// Intensity of the lightning light at full flash, relative to the environment's key light,
-  /// in [0, 100]. Default 8.
+  /// Intensity of the lightning light at full flash, relative to the environment's key light.
   double lightning_light = 8.0;
 };
+
+/// ExportParams' own keys, in four sections: [camera] aperture_m, [output] (after cli's
+/// `frames`), [export] and [lightning] light. Its camera is sim::kCameraParams, fog and
+/// environment their own tables.
+inline constexpr sim::Param<ExportParams> kExportParams[] = {
+    sim::number("camera", "aperture_m", &ExportParams::aperture_m, "m", sim::Range::closed(0, 1)),
+    sim::number("output", "fps", &ExportParams::fps, "1/s", sim::Range::open_closed(0, 240)),
+    sim::integer("output", "width", &ExportParams::width, "pixels", 16, 8192),
+    sim::integer("output", "height", &ExportParams::height, "pixels", 16, 8192),
+    sim::choice<&ExportParams::quality>("output", "quality", kQualityNames),
+    sim::number("export", "sphere_distance_m", &ExportParams::sphere_distance_m, "m",
+                sim::Range::closed(0, 1000)),
+    sim::number("export", "min_streak_coverage", &ExportParams::min_streak_coverage,
+                "share of a pixel", sim::Range::closed(0, 1)),
+    sim::number("export", "splash_keep", &ExportParams::splash_keep, "share",
+                sim::Range::open_closed(0, 1)),
+    sim::flag("export", "environment_plate", &ExportParams::environment_plate),
+    sim::flag("export", "mask", &ExportParams::mask),
+    sim::number("lightning", "light", &ExportParams::lightning_light, "",
+                sim::Range::closed(0, 100)),
+};
+static_assert(sim::well_formed<ExportParams>(kExportParams));
+
+/// Throws std::invalid_argument naming the first field out of its range (the tables above and
+/// sim::kCameraParams), or an environment that is not built in when no include is given.
+void validate(const ExportParams& look);
 
 }  // namespace raintrace::povgen

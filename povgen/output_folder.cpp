@@ -1,6 +1,9 @@
 // Writing the shared files of an output folder.
 #include "povgen/output_folder.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+#include <cerrno>
 #include <cstdio>
 #include <fstream>
 #include <memory>
@@ -8,39 +11,61 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "povgen/content_hash.h"
 #include "povgen/frame_text.h"
-#include "povgen/manifest.h"
 #include "povgen/scene_files.h"
 #include "povgen/streak_atlas.h"
 #include "povgen/templates.h"
 
 namespace raintrace::povgen {
 
+namespace {
+
+// Errors carry the system's reason (std::system_error: "… : No space left on device"), so the
+// user learns why, and cli/ can tell a full disk from a bad scene.
+[[noreturn]] void throw_system_error(int error, const std::string& what) {
+  throw std::system_error(error, std::generic_category(), what);
+}
+
+void rename_or_throw(const std::filesystem::path& from, const std::filesystem::path& to) {
+  std::error_code error;
+  std::filesystem::rename(from, to, error);
+  if (error) {
+    std::filesystem::remove(from, error);
+    throw std::system_error(error, "cannot rename " + from.string() + " to " + to.string());
+  }
+}
+
+}  // namespace
+
 void write_file_atomic(const std::filesystem::path& path, std::string_view bytes) {
   std::filesystem::path tmp = path;
   tmp += ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.flush();
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw_system_error(errno, "cannot write " + tmp.string());
+  std::size_t written = 0;
+  int error = 0;
+  while (written < bytes.size() && error == 0) {
+    const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
+    if (n > 0) {
+      written += static_cast<std::size_t>(n);
+    } else if (n < 0 && errno != EINTR) {
+      error = errno;
+    }
   }
-  std::error_code error;
-  std::filesystem::rename(tmp, path, error);
-  if (error) {
-    throw std::runtime_error("cannot rename " + tmp.string() + " to " + path.string() + ": " +
-                             error.message());
+  if (::close(fd) != 0 && error == 0) error = errno;
+  if (error != 0) {
+    ::unlink(tmp.c_str());
+    throw_system_error(error, "cannot write " + tmp.string());
   }
+  rename_or_throw(tmp, path);
 }
 
 void create_output_folders(const std::filesystem::path& out_dir) {
   for (const char* sub : {"frames", "textures", "images"}) {
     std::error_code error;
     std::filesystem::create_directories(out_dir / sub, error);
-    if (error) {
-      throw std::runtime_error("cannot create " + (out_dir / sub).string() + ": " +
-                               error.message());
-    }
+    if (error) throw std::system_error(error, "cannot create " + (out_dir / sub).string());
   }
 }
 
@@ -48,33 +73,34 @@ std::string write_frame_file(const std::filesystem::path& path, const FrameValue
                              std::string_view hash_prefix, int threads) {
   std::filesystem::path tmp = path;
   tmp += ".tmp";
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(tmp.c_str(), "wb"), &std::fclose);
-  if (!file) throw std::runtime_error("cannot write " + tmp.string());
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(tmp.c_str(), "wbe"),
+                                                       &std::fclose);
+  if (!file) throw_system_error(errno, "cannot write " + tmp.string());
   ContentHasher hasher;
   hasher.update(hash_prefix);
-  bool ok = true;
+  int error = 0;  // the first write's errno (ENOSPC on a full disk)
   write_frame_text(
       values,
       [&](std::string_view piece) {
         hasher.update(piece);
-        ok = ok && std::fwrite(piece.data(), 1, piece.size(), file.get()) == piece.size();
+        if (error == 0 && std::fwrite(piece.data(), 1, piece.size(), file.get()) != piece.size()) {
+          error = errno != 0 ? errno : EIO;
+        }
       },
       StreakAtlasLayout{}, threads);
-  ok = std::fflush(file.get()) == 0 && ok;
-  ok = std::fclose(file.release()) == 0 && ok;
-  if (!ok) throw std::runtime_error("cannot write " + tmp.string() + " (disk full?)");
-  std::error_code error;
-  std::filesystem::rename(tmp, path, error);
-  if (error) {
-    throw std::runtime_error("cannot rename " + tmp.string() + " to " + path.string() + ": " +
-                             error.message());
+  if (std::fflush(file.get()) != 0 && error == 0) error = errno;
+  if (std::fclose(file.release()) != 0 && error == 0) error = errno;
+  if (error != 0) {
+    ::unlink(tmp.c_str());
+    throw_system_error(error, "cannot write " + tmp.string());
   }
+  rename_or_throw(tmp, path);
   return hasher.hex();
 }
 
 std::string read_file_bytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + path.string());
+  if (!in) throw_system_error(errno, "cannot read " + path.string());
   std::ostringstream bytes;
   bytes << in.rdbuf();
   return bytes.str();
@@ -107,15 +133,27 @@ std::string write_shared_files(const std::filesystem::path& out_dir, const Expor
   if (look.mask) {
     emit("mask.pov", dispatcher_text("mask", digits));
     emit("mask.ini", ini_text(look, frame_count, "mask", "mask.pov"));
+  } else {
+    std::filesystem::remove(out_dir / "mask.pov");
+    std::filesystem::remove(out_dir / "mask.ini");
   }
   // OpenImageIO picks the format from the extension, so the temporary name keeps ".png".
   const std::filesystem::path atlas = out_dir / kStreakAtlas;
   std::filesystem::path tmp = atlas;
   tmp.replace_filename("streak_atlas.tmp.png");
-  write_streak_atlas(tmp, StreakAtlasLayout{});
-  std::error_code error;
-  std::filesystem::rename(tmp, atlas, error);
-  if (error) throw std::runtime_error("cannot rename " + tmp.string() + ": " + error.message());
+  errno = 0;
+  try {
+    write_streak_atlas(tmp, StreakAtlasLayout{});
+  } catch (const std::runtime_error& e) {
+    // OpenImageIO words its own message; the system's reason is still in errno.
+    const int error = errno;
+    std::filesystem::remove(tmp);
+    if (error == ENOSPC || error == EDQUOT || error == EIO || error == EACCES || error == EROFS) {
+      throw_system_error(error, "cannot write " + tmp.string());
+    }
+    throw;
+  }
+  rename_or_throw(tmp, atlas);
   all += kStreakAtlas;
   all += '\0';
   all += read_file_bytes(atlas);

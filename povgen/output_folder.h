@@ -11,12 +11,12 @@
 
 namespace raintrace::povgen {
 
-/// Writes bytes to dir/relative via relative + ".tmp" and a rename. Throws std::runtime_error
-/// naming the path.
+/// Writes bytes to path via path + ".tmp" and a rename. Throws std::system_error naming the path
+/// with the system's reason ("No space left on device"); no temporary file is left behind.
 void write_file_atomic(const std::filesystem::path& path, std::string_view bytes);
 
 /// Creates out_dir with frames/, textures/ and images/ (empty, for POV-Ray: a missing output
-/// folder fails only after the whole parse). Throws std::runtime_error naming the folder.
+/// folder fails only after the whole parse). Throws std::system_error naming the folder.
 void create_output_folders(const std::filesystem::path& out_dir);
 
 /// Writes everything frames share: scene.inc, scene.pov, scene.ini, environment.inc,
@@ -28,11 +28,11 @@ std::string write_shared_files(const std::filesystem::path& out_dir, const Expor
 
 /// Streams the frame's text into path (via path.tmp and a rename) with `threads` writer
 /// threads and returns content_hash(hash_prefix + text): the frame's input hash when
-/// hash_prefix is the shared files' hash. Throws std::runtime_error naming the path.
+/// hash_prefix is the shared files' hash. Throws std::system_error naming the path.
 std::string write_frame_file(const std::filesystem::path& path, const FrameValues& values,
                              std::string_view hash_prefix, int threads);
 
-/// Bytes of a file, for hashing. Throws std::runtime_error if it cannot be read.
+/// Bytes of a file, for hashing. Throws std::system_error if it cannot be read.
 std::string read_file_bytes(const std::filesystem::path& path);
 
 }  // namespace raintrace::povgen

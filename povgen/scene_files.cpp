@@ -17,33 +17,6 @@ std::string vec(const glm::dvec3& v) {
   return "<" + format_number(v.x) + "," + format_number(v.y) + "," + format_number(v.z) + ">";
 }
 
-void check(bool ok, const char* what) {
-  if (!ok) throw std::invalid_argument(std::string{"export: "} + what);
-}
-
-void check_params(const ExportParams& look) {
-  check(look.width >= 16 && look.width <= 8192, "width must be in [16, 8192]");
-  check(look.height >= 16 && look.height <= 8192, "height must be in [16, 8192]");
-  check(std::isfinite(look.fps) && look.fps > 0.0, "fps must be finite and > 0");
-  check(std::isfinite(look.sphere_distance_m) && look.sphere_distance_m >= 0.0,
-        "sphere_distance_m must be finite and >= 0");
-  check(look.min_streak_coverage >= 0.0 && look.min_streak_coverage <= 1.0,
-        "min_streak_coverage must be in [0, 1]");
-  check(look.splash_keep > 0.0 && look.splash_keep <= 1.0, "splash_keep must be in (0, 1]");
-  check(std::isfinite(look.lightning_light) && look.lightning_light >= 0.0,
-        "lightning_light must be finite and >= 0");
-  check(std::isfinite(look.fog.depth_m) && look.fog.depth_m > 0.0,
-        "fog depth_m must be finite and > 0");
-  check(std::isfinite(look.fog.density_per_m) && look.fog.density_per_m >= 0.0,
-        "fog density_per_m must be finite and >= 0");
-  check(std::isfinite(look.aperture_m) && look.aperture_m >= 0.0 && look.aperture_m <= 1.0,
-        "camera aperture_m must be in [0, 1]");
-  check(std::isfinite(look.camera.fov_deg) && look.camera.fov_deg > 0.0 &&
-            look.camera.fov_deg < 180.0,
-        "camera fov_deg must be in (0, 180)");
-  if (look.environment.include_path.empty()) environment_template(look.environment.name);
-}
-
 std::string fog_text(const FogParams& fog, const sim::Camera& camera) {
   std::string text;
   if (fog.mode == FogMode::off || fog.density_per_m <= 0.0) return text;
@@ -167,7 +140,7 @@ std::string plate_pov_text() {
 }
 
 std::string plate_ini_text(const ExportParams& look) {
-  check_params(look);
+  validate(look);
   std::string text;
   text +=
       "; raintrace: `povray plate.ini` renders the environment once, without rain, into\n"
@@ -183,7 +156,7 @@ std::string plate_ini_text(const ExportParams& look) {
 }
 
 std::string scene_inc_text(const ExportParams& look) {
-  check_params(look);
+  validate(look);
   const std::string aspect = format_number(static_cast<double>(look.width) / look.height);
   std::string text;
   text +=
@@ -235,7 +208,7 @@ std::string dispatcher_text(const char* prefix, int digits) {
 
 std::string ini_text(const ExportParams& look, int frame_count, const char* prefix,
                      const char* dispatcher) {
-  check_params(look);
+  validate(look);
   const std::string p{prefix};
   const std::string d{dispatcher};
   if ((p != "frame" || d != "scene.pov") && (p != "mask" || d != "mask.pov")) {

@@ -167,6 +167,25 @@ TEST(SceneFiles, PlateIniRendersTheEnvironmentAloneAtTheFramesSize) {
   EXPECT_TRUE(contains(plate_pov_text(), "#declare RT_NoPlate=1;\n#include \"scene.inc\""));
 }
 
+TEST(SceneFiles, RangesAreTheSceneFormatsOwn) {
+  // povgen checks its params with the same table rows as the scene reader (it used to allow
+  // fov in (0, 180) where the reader allowed (1, 170)).
+  ExportParams look;
+  look.camera.fov_deg = 175;
+  try {
+    scene_inc_text(look);
+    ADD_FAILURE() << "fov 175 accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "camera.fov_deg must be in (1, 170) (got 175)");
+  }
+  look = ExportParams{};
+  look.fps = 300;
+  EXPECT_THROW(ini_text(look, 48, "frame", "scene.pov"), std::invalid_argument);
+  look = ExportParams{};
+  look.fog.mode = static_cast<FogMode>(9);
+  EXPECT_THROW(scene_inc_text(look), std::invalid_argument);
+}
+
 TEST(SceneFiles, HostileValuesAreRefused) {
   ExportParams look;
   look.camera.position.x = std::numeric_limits<double>::quiet_NaN();

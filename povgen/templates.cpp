@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <stdexcept>
 #include <system_error>
@@ -16,7 +17,8 @@ extern const char* const kCloseupTemplate;
 extern const char* const kMaterialsTemplate;
 
 const std::vector<std::string>& builtin_environments() {
-  static const std::vector<std::string> names{"night_street", "field", "closeup"};
+  static const std::vector<std::string> names(std::begin(kEnvironmentNames),
+                                              std::end(kEnvironmentNames));
   return names;
 }
 

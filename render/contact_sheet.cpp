@@ -8,6 +8,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "output/disk_space.h"
 #include "render/povray_command.h"
 
 namespace raintrace::render {
@@ -70,8 +71,11 @@ ContactSheetResult make_contact_sheet(const std::filesystem::path& out_dir,
   }
   const auto temp = out_dir / ".tmp.contact_sheet.png";
   if (!sheet.write(temp.string(), OIIO::TypeDesc::UINT8)) {
-    throw std::runtime_error("contact sheet: cannot write " + temp.string() + ": " +
-                             sheet.geterror());
+    std::filesystem::remove(temp);
+    const std::string what = "contact sheet: cannot write " + temp.string();
+    output::throw_if_out_of_space(out_dir, static_cast<std::uint64_t>(spec.width) * spec.height * 4,
+                                  what);
+    throw std::runtime_error(what + ": " + sheet.geterror());
   }
   std::filesystem::rename(temp, out_dir / "contact_sheet.png");
   result.path = out_dir / "contact_sheet.png";

@@ -11,14 +11,17 @@
 #include <stdexcept>
 #include <thread>
 
-#include "povgen/manifest.h"
+#include "output/disk_space.h"
+#include "output/image_check.h"
+#include "povgen/content_hash.h"
 #include "povgen/output_folder.h"
-#include "render/image_check.h"
 #include "render/povray_command.h"
 #include "render/process.h"
 
 namespace raintrace::render {
 namespace {
+
+using output::image_is_complete;
 
 std::string read_text(const std::filesystem::path& path) {
   std::ifstream in{path, std::ios::binary};
@@ -113,6 +116,11 @@ void EnvironmentPlate::finish(int exit_code) {
   m_done = true;
   const auto temp = m_out / environment_plate_temp_name();
   if (exit_code != 0) {
+    // A full disk is not a plate problem the frames can work around: they would fail too.
+    output::throw_if_out_of_space(
+        m_out, static_cast<std::uint64_t>(m_width) * m_height * 8 + 65536,
+        fmt::format("POV-Ray could not write the environment plate into {} (log {})",
+                    m_out.string(), kPlateLog));
     auto lines = povray_error_lines(read_text(m_out / kPlateLog));
     std::string reason;
     for (const auto& line : lines) reason += (reason.empty() ? "" : " | ") + line;

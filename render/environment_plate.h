@@ -45,7 +45,8 @@ class EnvironmentPlate {
   EnvironmentPlate& operator=(const EnvironmentPlate&) = delete;
 
   /// Non-blocking: true once finished, successfully or not. On success the plate is at
-  /// kPlateImage with its sidecar; otherwise kPlateImage does not exist.
+  /// kPlateImage with its sidecar; otherwise kPlateImage does not exist. Throws
+  /// std::system_error (ENOSPC) when POV-Ray failed because the folder's disk is full.
   bool poll();
   /// Blocks (polling every 20 ms) until poll() is true; a stop request ends POV-Ray and finishes
   /// as interrupted. on_tick, when given, is called at each poll (progress displays).

@@ -6,13 +6,15 @@
 #include <atomic>
 #include <fstream>
 
-#include "render/image_check.h"
+#include "output/image_check.h"
 #include "render/povray_command.h"
 #include "render/process.h"
 #include "render/test_folder.h"
 
 namespace raintrace::render {
 namespace {
+
+using output::image_is_complete;
 
 void append(const std::filesystem::path& path, const std::string& text) {
   std::ofstream out{path, std::ios::binary | std::ios::app};

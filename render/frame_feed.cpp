@@ -5,11 +5,11 @@
 
 namespace raintrace::render {
 
-void FrameFeed::publish(povgen::FrameEntry entry) {
+void FrameFeed::publish(output::ExportedFrame frame) {
   const std::lock_guard lock{m_mutex};
-  if (m_closed || entry.number <= m_last_number) return;
-  m_last_number = entry.number;
-  m_ready.push_back(std::move(entry));
+  if (m_closed || frame.number <= m_last_number) return;
+  m_last_number = frame.number;
+  m_ready.push_back(std::move(frame));
 }
 
 void FrameFeed::close() {

@@ -8,14 +8,23 @@
 #include <sstream>
 #include <thread>
 
-#include "povgen/manifest.h"
+#include "output/folder_state.h"
+#include "output/image_check.h"
 #include "render/environment_plate.h"
-#include "render/image_check.h"
 #include "render/process.h"
 #include "render/test_folder.h"
 
 namespace raintrace::render {
 namespace {
+
+using output::image_is_complete;
+using output::read_manifest;
+
+/// Opens the folder as `raintrace render DIR` does and renders it.
+RenderSummary render_local(const std::filesystem::path& dir, const LocalRenderSettings& s) {
+  auto folder = output::FolderState::open(dir, "test");
+  return render::render_local(folder, s);
+}
 
 LocalRenderSettings settings(int jobs, int max_span = 12, bool force = false) {
   LocalRenderSettings s;
@@ -28,12 +37,12 @@ LocalRenderSettings settings(int jobs, int max_span = 12, bool force = false) {
 /// Every frame of the manifest in `dir` (there must be `frames`) is rendered from its current
 /// input into a complete image, and nothing is left at a temp name.
 void expect_every_frame_rendered(const std::filesystem::path& dir, std::size_t frames) {
-  const auto manifest = povgen::read_manifest(dir / "manifest.json");
+  const auto manifest = read_manifest(dir / "manifest.json");
   ASSERT_EQ(manifest.frames.size(), frames);
   for (const auto& f : manifest.frames) {
-    EXPECT_TRUE(image_is_complete(dir / f.image, 64, 36)) << f.image;
-    EXPECT_EQ(f.status, "rendered");
-    EXPECT_EQ(f.rendered_hash, f.input_hash);
+    EXPECT_TRUE(image_is_complete(dir / f.image.path, 64, 36)) << f.image.path;
+    EXPECT_EQ(f.image.status, output::FrameStatus::rendered);
+    EXPECT_EQ(f.image.rendered_hash, f.input_hash);
   }
   EXPECT_TRUE(std::filesystem::is_empty(dir / "images/.tmp"));
 }
@@ -70,9 +79,8 @@ TEST_F(PovrayLocalRender, RendersEveryFrameToAValidImageAndRecordsItInTheManifes
 
 TEST_F(PovrayLocalRender, MaskOptionAlsoRendersMaskImagesFromMaskIni) {
   const auto dir = testing::fresh_test_dir("mask");
-  testing::write_test_folder(dir, {.frames = 3});
+  testing::write_test_folder(dir, {.frames = 3, .masks = true});
   auto with_masks = settings(2);
-  with_masks.mask = true;
   const auto summary = render_local(dir, with_masks);
   EXPECT_TRUE(summary.failures.empty());
   EXPECT_EQ(summary.progress.done, 6);  // 3 images + 3 masks
@@ -118,9 +126,9 @@ TEST_F(PovrayLocalRender, AFrameThatFailsIsReportedWithPovrayErrorAndTheOthersFi
     EXPECT_NE(failure.command.find("povray scene.ini"), std::string::npos);
     EXPECT_EQ(summary.progress.done, 5);
     EXPECT_EQ(summary.progress.failed, 1);
-    const auto manifest = povgen::read_manifest(dir / "manifest.json");
-    EXPECT_EQ(manifest.frames[2].status, "failed");
-    EXPECT_NE(manifest.frames[2].error.find("Parse Error"), std::string::npos);
+    const auto manifest = read_manifest(dir / "manifest.json");
+    EXPECT_EQ(manifest.frames[2].image.status, output::FrameStatus::failed);
+    EXPECT_NE(manifest.frames[2].image.error.find("Parse Error"), std::string::npos);
     for (int f : {1, 2, 4, 5, 6}) {
       EXPECT_TRUE(image_is_complete(dir / final_image_name(Pass::image, f), 64, 36)) << f;
     }
@@ -250,13 +258,22 @@ TEST_F(PovrayLocalRender, FolderWithoutPlateIniRendersNoPlate) {
   EXPECT_FALSE(std::filesystem::exists(dir / kPlateLog));
 }
 
+/// The folder's frames as the exporter would publish them.
+std::vector<output::ExportedFrame> exported_frames(const std::filesystem::path& dir) {
+  std::vector<output::ExportedFrame> frames;
+  for (const auto& f : read_manifest(dir / "manifest.json").frames) {
+    frames.push_back({f.number, f.input_hash});
+  }
+  return frames;
+}
+
 // The test folder's frames handed over through a FrameFeed from another thread, the way the
 // exporter publishes them while it simulates: `first` frames at once, the rest once `release`
 // returns true (or a generous safety deadline passes, so a broken renderer fails instead of
 // hanging), then the feed closes.
 class Producer {
  public:
-  Producer(FrameFeed& feed, std::vector<povgen::FrameEntry> entries, std::size_t first,
+  Producer(FrameFeed& feed, std::vector<output::ExportedFrame> entries, std::size_t first,
            std::function<bool()> release)
       : m_thread{[&feed, entries = std::move(entries), first, release = std::move(release), this] {
           for (std::size_t i = 0; i < first && i < entries.size(); ++i) feed.publish(entries[i]);
@@ -285,8 +302,8 @@ class Producer {
 TEST_F(PovrayLocalRender, FedFramesRenderBeforeTheLastFrameIsPublished) {
   const auto dir = testing::fresh_test_dir("feed");
   testing::write_test_folder(dir, {.frames = 6});
-  const auto entries = povgen::read_manifest(dir / "manifest.json").frames;
-  FrameFeed feed{6, 4};
+  const auto entries = exported_frames(dir);
+  FrameFeed feed{6};
   std::atomic<int> done{0};
   // Frames 4-6 are held back until a frame has rendered: a renderer that waited for the whole
   // export would never get there.
@@ -309,12 +326,11 @@ TEST_F(PovrayLocalRender, FedFramesRenderBeforeTheLastFrameIsPublished) {
 TEST_F(PovrayLocalRender, FedFramesWaitForThePlateWhileTheFeedIsStillRead) {
   const auto dir = testing::fresh_test_dir("feed_plate");
   testing::write_test_folder(dir, {.frames = 4, .plate = true});
-  FrameFeed feed{4, 4};
+  FrameFeed feed{4};
   std::atomic<int> exported{0};
   // The rest is published only once the renderer has recorded the first two, which it must do
   // while the plate still renders (no frame can have started before it).
-  Producer producer{feed, povgen::read_manifest(dir / "manifest.json").frames, 2,
-                    [&] { return exported.load() >= 2; }};
+  Producer producer{feed, exported_frames(dir), 2, [&] { return exported.load() >= 2; }};
   auto fed = settings(2);
   fed.incoming = &feed;
   fed.on_progress = [&](const RenderProgress& p) { exported = p.exported; };
@@ -329,22 +345,23 @@ TEST_F(PovrayLocalRender, FedFramesWaitForThePlateWhileTheFeedIsStillRead) {
 
 TEST_F(PovrayLocalRender, FedFramesThatAreUpToDateAreSkippedAndMasksFollow) {
   const auto dir = testing::fresh_test_dir("feed_skip");
-  testing::write_test_folder(dir, {.frames = 4});
-  ASSERT_EQ(render_local(dir, settings(2)).progress.done, 4);
+  testing::write_test_folder(dir, {.frames = 4, .masks = true});
+  ASSERT_EQ(render_local(dir, settings(2)).progress.done, 8);
   testing::replace_frame(dir, 3, "#include \"scene.inc\"\nsphere { 0, 1 pigment { rgb 1 } }\n");
-  FrameFeed feed{4, 4};
-  Producer producer{feed, povgen::read_manifest(dir / "manifest.json").frames, 4,
-                    [] { return true; }};
+  std::filesystem::remove(dir / final_image_name(Pass::mask, 1));
+  std::filesystem::resize_file(dir / final_image_name(Pass::mask, 2), 0);
+  FrameFeed feed{4};
+  Producer producer{feed, exported_frames(dir), 4, [] { return true; }};
   auto fed = settings(2);
   fed.incoming = &feed;
-  fed.mask = true;
   int most_total = 0;
   fed.on_progress = [&](const RenderProgress& p) { most_total = std::max(most_total, p.total); };
   const auto summary = render_local(dir, fed);
-  // Frame 3 changed: its image and mask; the other three only need their missing masks.
-  EXPECT_EQ(summary.progress.done, 5);
-  EXPECT_EQ(summary.progress.total, 5);
-  EXPECT_EQ(summary.progress.skipped, 3);
+  // Frame 3 changed: its image and mask; masks 1 (missing) and 2 (emptied) again; frame 4 is
+  // up to date.
+  EXPECT_EQ(summary.progress.done, 4);
+  EXPECT_EQ(summary.progress.total, 4);
+  EXPECT_EQ(summary.progress.skipped, 1);
   EXPECT_LE(most_total, 8);  // never more than 4 frames × (image + mask)
   for (int f = 1; f <= 4; ++f) {
     EXPECT_TRUE(image_is_complete(dir / final_image_name(Pass::mask, f), 64, 36)) << f;
@@ -354,11 +371,11 @@ TEST_F(PovrayLocalRender, FedFramesThatAreUpToDateAreSkippedAndMasksFollow) {
 TEST_F(PovrayLocalRender, StopWhileFedStillRecordsEveryPublishedFrameInTheManifest) {
   const auto dir = testing::fresh_test_dir("feed_stop");
   testing::write_test_folder(dir, {.frames = 4});
-  auto entries = povgen::read_manifest(dir / "manifest.json").frames;
+  auto entries = exported_frames(dir);
   // Frames 3 and 4 arrive only after the stop, as from an exporter finishing its current frame.
   entries[2].input_hash = "after-stop-3";
   entries[3].input_hash = "after-stop-4";
-  FrameFeed feed{4, 4};
+  FrameFeed feed{4};
   std::atomic<bool> stop{false};
   Producer producer{feed, entries, 2, [&] { return stop.load(); }};
   auto fed = settings(1, 2);
@@ -370,12 +387,12 @@ TEST_F(PovrayLocalRender, StopWhileFedStillRecordsEveryPublishedFrameInTheManife
   const auto summary = render_local(dir, fed);
   EXPECT_TRUE(summary.interrupted);
   EXPECT_TRUE(summary.failures.empty());
-  const auto manifest = povgen::read_manifest(dir / "manifest.json");
+  const auto manifest = read_manifest(dir / "manifest.json");
   ASSERT_EQ(manifest.frames.size(), 4U);
-  EXPECT_EQ(manifest.frames[0].status, "rendered");
+  EXPECT_EQ(manifest.frames[0].image.status, output::FrameStatus::rendered);
   EXPECT_EQ(manifest.frames[2].input_hash, "after-stop-3");
   EXPECT_EQ(manifest.frames[3].input_hash, "after-stop-4");
-  EXPECT_NE(manifest.frames[3].status, "rendered");
+  EXPECT_NE(manifest.frames[3].image.status, output::FrameStatus::rendered);
 }
 
 }  // namespace

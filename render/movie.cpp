@@ -4,12 +4,14 @@
 
 #include <fmt/core.h>
 
+#include "output/disk_space.h"
+#include "output/layout.h"
 #include "render/process.h"
 
 namespace raintrace::render {
 namespace {
 
-std::vector<std::string> input_args(double fps, int first_frame, int digits) {
+std::vector<std::string> input_args(double fps, const MovieFrames& frames) {
   return {"ffmpeg",
           "-hide_banner",
           "-loglevel",
@@ -18,16 +20,18 @@ std::vector<std::string> input_args(double fps, int first_frame, int digits) {
           "-framerate",
           fmt::format("{}", fps),
           "-start_number",
-          std::to_string(first_frame),
+          std::to_string(frames.first),
           "-i",
-          fmt::format("images/frame_%0{}d.png", digits)};
+          fmt::format("images/frame_%0{}d.png", frames.digits),
+          "-frames:v",
+          std::to_string(frames.count)};
 }
 
 }  // namespace
 
-std::vector<std::string> mp4_argv(double fps, int first_frame, const std::string& output,
-                                  int digits) {
-  auto argv = input_args(fps, first_frame, digits);
+std::vector<std::string> mp4_argv(double fps, const MovieFrames& frames,
+                                  const std::string& output) {
+  auto argv = input_args(fps, frames);
   // libx264 with yuv420p needs even width and height: round down by at most one pixel.
   argv.insert(argv.end(),
               {"-vf", "scale=trunc(iw/2)*2:trunc(ih/2)*2", "-c:v", "libx264", "-pix_fmt", "yuv420p",
@@ -35,9 +39,9 @@ std::vector<std::string> mp4_argv(double fps, int first_frame, const std::string
   return argv;
 }
 
-std::vector<std::string> gif_argv(double fps, int first_frame, const std::string& output,
-                                  int digits) {
-  auto argv = input_args(fps, first_frame, digits);
+std::vector<std::string> gif_argv(double fps, const MovieFrames& frames,
+                                  const std::string& output) {
+  auto argv = input_args(fps, frames);
   argv.insert(argv.end(), {"-filter_complex",
                            "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither="
                            "bayer:bayer_scale=3",
@@ -45,10 +49,12 @@ std::vector<std::string> gif_argv(double fps, int first_frame, const std::string
   return argv;
 }
 
-MovieResult make_movies(const std::filesystem::path& out_dir, double fps, int first_frame,
-                        int digits) {
+MovieResult make_movies(const std::filesystem::path& out_dir, double fps,
+                        const MovieFrames& frames) {
   MovieResult result;
   if (!find_program("ffmpeg")) {
+    std::filesystem::remove(out_dir / output::kMovie);
+    std::filesystem::remove(out_dir / output::kGif);
     result.warning =
         "ffmpeg not found: no MP4/GIF made (install it with `sudo apt-get install ffmpeg`)";
     return result;
@@ -67,13 +73,17 @@ MovieResult make_movies(const std::filesystem::path& out_dir, double fps, int fi
       made = out_dir / name;
     } else {
       std::filesystem::remove(temp);
+      std::filesystem::remove(out_dir / name);
+      output::throw_if_out_of_space(
+          out_dir, 1 << 20,
+          fmt::format("ffmpeg could not write {} into {}", name, out_dir.string()));
       if (!result.warning.empty()) result.warning += "; ";
       result.warning += fmt::format(
           "ffmpeg failed making {} (exit code {}, see logs/{}.ffmpeg.log)", name, code, name);
     }
   };
-  run(mp4_argv(fps, first_frame, ".tmp.animation.mp4", digits), "animation.mp4", result.mp4);
-  run(gif_argv(fps, first_frame, ".tmp.animation.gif", digits), "animation.gif", result.gif);
+  run(mp4_argv(fps, frames, ".tmp.animation.mp4"), output::kMovie, result.mp4);
+  run(gif_argv(fps, frames, ".tmp.animation.gif"), output::kGif, result.gif);
   return result;
 }
 

@@ -8,12 +8,18 @@
 
 namespace raintrace::render {
 
-/// ffmpeg argv for the MP4 of images/frame_%04d.png from first_frame on, written to output.
-std::vector<std::string> mp4_argv(double fps, int first_frame, const std::string& output,
-                                  int digits = 4);
+/// Which images a movie shows: images/frame_NNNN.png for first_frame .. first_frame + count − 1
+/// (ffmpeg stops there even when later images exist: they may not belong to the movie).
+struct MovieFrames {
+  int first = 1;
+  int count = 1;
+  int digits = 4;
+};
+
+/// ffmpeg argv for the MP4 of `frames`, written to output.
+std::vector<std::string> mp4_argv(double fps, const MovieFrames& frames, const std::string& output);
 /// ffmpeg argv for the GIF (palettegen + paletteuse in one filter graph).
-std::vector<std::string> gif_argv(double fps, int first_frame, const std::string& output,
-                                  int digits = 4);
+std::vector<std::string> gif_argv(double fps, const MovieFrames& frames, const std::string& output);
 
 struct MovieResult {
   std::filesystem::path mp4;  ///< empty when not made
@@ -22,9 +28,10 @@ struct MovieResult {
 };
 
 /// Makes out_dir/animation.mp4 and out_dir/animation.gif from the frames, each through a temp
-/// name renamed on success. Never throws for a missing or failing ffmpeg: that is a warning,
-/// the frames are the result that matters.
-MovieResult make_movies(const std::filesystem::path& out_dir, double fps, int first_frame,
-                        int digits = 4);
+/// name renamed on success; a movie that could not be made is removed (an older one would show
+/// other frames). A missing or failing ffmpeg is a warning, the frames are the result that
+/// matters; a full disk throws std::system_error (ENOSPC).
+MovieResult make_movies(const std::filesystem::path& out_dir, double fps,
+                        const MovieFrames& frames);
 
 }  // namespace raintrace::render

@@ -18,16 +18,22 @@ bool has(const std::vector<std::string>& v, const std::string& s) {
 }
 
 TEST(MovieArgv, Mp4IsH264Yuv420WithEvenSize) {
-  const auto argv = mp4_argv(24, 5, "x.mp4");
+  const auto argv = mp4_argv(24, {5, 3, 4}, "x.mp4");
   EXPECT_TRUE(has(argv, "libx264"));
   EXPECT_TRUE(has(argv, "yuv420p"));
   EXPECT_TRUE(has(argv, "scale=trunc(iw/2)*2:trunc(ih/2)*2"));
-  EXPECT_TRUE(has(argv, "5"));  // -start_number
+  const auto start = std::find(argv.begin(), argv.end(), "-start_number");
+  ASSERT_NE(start, argv.end());
+  EXPECT_EQ(*(start + 1), "5");
+  // Exactly the frames given, even when later images exist.
+  const auto count = std::find(argv.begin(), argv.end(), "-frames:v");
+  ASSERT_NE(count, argv.end());
+  EXPECT_EQ(*(count + 1), "3");
   EXPECT_EQ(argv.back(), "x.mp4");
 }
 
 TEST(MovieArgv, GifUsesAGeneratedPalette) {
-  const auto argv = gif_argv(12, 1, "x.gif");
+  const auto argv = gif_argv(12, {1, 2, 4}, "x.gif");
   const auto graph = std::find(argv.begin(), argv.end(), "-filter_complex");
   ASSERT_NE(graph, argv.end());
   EXPECT_NE((graph + 1)->find("palettegen"), std::string::npos);
@@ -40,13 +46,13 @@ TEST(Movies, OddSizedFramesBecomeAPlayableMp4AndGif) {
   }
   const auto dir = testing::fresh_test_dir("movie");
   std::filesystem::create_directories(dir / "images");
-  for (int f = 1; f <= 4; ++f) {
+  for (int f = 1; f <= 5; ++f) {
     OIIO::ImageBuf img{OIIO::ImageSpec{33, 17, 3, OIIO::TypeDesc::UINT8}};
     const float c[3] = {static_cast<float>(f) / 4.0f, 0.5f, 0.2f};
     OIIO::ImageBufAlgo::fill(img, c);
     ASSERT_TRUE(img.write((dir / final_image_name(Pass::image, f)).string()));
   }
-  const auto result = make_movies(dir, 24, 1);
+  const auto result = make_movies(dir, 24, {1, 4, 4});  // a fifth image exists: not shown
   EXPECT_TRUE(result.warning.empty()) << result.warning;
   ASSERT_FALSE(result.mp4.empty());
   ASSERT_FALSE(result.gif.empty());

@@ -10,12 +10,8 @@
 namespace raintrace::render {
 
 namespace {
-const char* prefix(Pass pass) { return pass == Pass::image ? "frame" : "mask"; }
+const char* prefix(Pass pass) { return output::pass_prefix(pass); }
 }  // namespace
-
-std::string final_image_name(Pass pass, int frame, int digits) {
-  return fmt::format("images/{}_{:0{}d}.png", prefix(pass), frame, digits);
-}
 
 std::string temp_dir_name() { return "images/.tmp"; }
 

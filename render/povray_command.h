@@ -7,26 +7,18 @@
 #include <string>
 #include <vector>
 
+#include "output/layout.h"
+
 namespace raintrace::render {
 
-/// A contiguous run of frames rendered by one POV-Ray process (1-based, inclusive).
-struct FrameSpan {
-  int first = 1;
-  int last = 1;
-  int count() const { return last - first + 1; }
-};
+// A contiguous run of frames (one POV-Ray process renders one), the scene variant it renders
+// and the final image names: the output folder's layout (output/layout.h).
+using output::final_image_name;
+using output::FrameSpan;
+using output::Pass;
 
-/// The scene variant a process renders (the exporter writes both ini files).
-enum class Pass {
-  image,  ///< scene.ini → images/frame_NNNN.png
-  mask,   ///< mask.ini (rain white on black) → images/mask_NNNN.png
-};
-
-/// Where a frame's finished image lives, relative to the output folder:
-/// "images/frame_0007.png" or "images/mask_0007.png"; `digits` as in the frame file names
-/// (4, more past 9999 frames).
-std::string final_image_name(Pass pass, int frame, int digits = 4);
-/// Where POV-Ray writes it first ("images/.tmp/frame_0007.png"); renamed only once verified.
+/// Where POV-Ray writes a picture first ("images/.tmp/frame_0007.png"); renamed to its
+/// final_image_name only once verified.
 std::string temp_image_name(Pass pass, int frame, int digits = 4);
 /// The folder of temp_image_name, relative to the output folder.
 std::string temp_dir_name();

@@ -11,7 +11,8 @@
 #include <thread>
 #include <vector>
 
-#include "render/image_check.h"
+#include "output/disk_space.h"
+#include "output/image_check.h"
 #include "render/process.h"
 
 namespace raintrace::render {
@@ -117,7 +118,13 @@ class Runner {
  private:
   bool stop_requested() const { return m_settings.stop != nullptr && m_settings.stop->load(); }
 
+  // Room one more image needs at most: an uncompressed 16-bit RGBA PNG, plus its log.
+  [[nodiscard]] std::uint64_t image_bytes() const {
+    return static_cast<std::uint64_t>(m_settings.width) * m_settings.height * 8 + 65536;
+  }
+
   Running start(const RenderJob& job) {
+    if (m_callbacks.on_started) m_callbacks.on_started(job);
     Running r;
     r.job = job;
     r.argv = povray_argv(job.pass, job.span, m_settings.digits);
@@ -144,7 +151,7 @@ class Runner {
   void promote_ready(Running& r) {
     while (r.next_frame <= r.job.span.last) {
       const auto temp = m_out / temp_image_name(r.job.pass, r.next_frame, m_settings.digits);
-      if (!image_is_complete(temp, m_settings.width, m_settings.height)) return;
+      if (!output::image_is_complete(temp, m_settings.width, m_settings.height)) return;
       const auto final_path = m_out / final_image_name(r.job.pass, r.next_frame, m_settings.digits);
       std::filesystem::create_directories(final_path.parent_path());
       std::filesystem::rename(temp, final_path);
@@ -159,6 +166,12 @@ class Runner {
     promote_ready(r);
     if (r.next_frame > r.job.span.last) return;
     if (stop_requested()) return;  // interrupted, not failed: the next run redoes the rest
+    // POV-Ray says "Cannot access data in file" when its image does not fit: ask the disk.
+    output::throw_if_out_of_space(
+        m_out, image_bytes(),
+        fmt::format("POV-Ray could not write {} of frame {} into {} (log {})",
+                    r.job.pass == Pass::image ? "the image" : "the mask", r.next_frame,
+                    m_out.string(), r.log));
     FrameFailure failure;
     failure.frame = r.next_frame;
     failure.pass = r.job.pass;
@@ -169,8 +182,9 @@ class Runner {
     failure.error_lines = povray_error_lines(read_text(m_out / r.log));
     if (failure.error_lines.empty()) {
       std::string why;
-      image_is_complete(m_out / temp_image_name(r.job.pass, r.next_frame, m_settings.digits),
-                        m_settings.width, m_settings.height, &why);
+      output::image_is_complete(
+          m_out / temp_image_name(r.job.pass, r.next_frame, m_settings.digits), m_settings.width,
+          m_settings.height, &why);
       failure.error_lines.push_back(
           fmt::format("{}: {}", temp_image_name(r.job.pass, r.next_frame, m_settings.digits), why));
     }

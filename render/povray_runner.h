@@ -33,6 +33,9 @@ struct FrameFailure {
 };
 
 struct RunnerCallbacks {
+  /// POV-Ray is about to start on this job (also on the rest of a failed span). May throw to
+  /// stop the run: running processes are then stopped and nothing further is promoted.
+  std::function<void(const RenderJob& job)> on_started;
   /// A verified image is now at final_image_name(pass, frame).
   std::function<void(Pass pass, int frame, double seconds)> on_rendered;
   std::function<void(const FrameFailure&)> on_failed;
@@ -62,7 +65,9 @@ class JobSource {
 
 /// Renders every job; returns false when stopped by settings.stop (finished frames are promoted
 /// and reported first). A span whose process fails at frame f reports f and goes on with
-/// f+1..last in a new process. Logs go to out_dir/logs/<pass>_AAAA-BBBB.log.
+/// f+1..last in a new process — unless the folder's filesystem is full: then it throws
+/// std::system_error (ENOSPC) naming the frame, since every further frame would fail the same
+/// way. Logs go to out_dir/logs/<pass>_AAAA-BBBB.log.
 bool run_povray_jobs(const std::filesystem::path& out_dir, std::deque<RenderJob> jobs,
                      const RunnerSettings& settings, const RunnerCallbacks& callbacks);
 /// The same, with jobs taken from `source` as they become ready, until it is exhausted and

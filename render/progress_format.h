@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "render/local_render.h"
+#include "render/progress.h"
 
 namespace raintrace::render {
 

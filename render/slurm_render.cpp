@@ -10,15 +10,18 @@
 #include <stdexcept>
 #include <thread>
 
-#include "povgen/manifest.h"
+#include "output/folder_lock.h"
+#include "output/image_check.h"
+#include "povgen/output_folder.h"
 #include "render/environment_plate.h"
-#include "render/frame_plan.h"
 #include "render/process.h"
+#include "render/spans.h"
 
 namespace raintrace::render {
 namespace {
 
 using nlohmann::json;
+using output::FolderState;
 
 std::string read_text(const std::filesystem::path& path) {
   std::ifstream in{path, std::ios::binary};
@@ -27,23 +30,12 @@ std::string read_text(const std::filesystem::path& path) {
   return s.str();
 }
 
-void write_atomically(const std::filesystem::path& path, const std::string& text) {
-  std::filesystem::create_directories(path.parent_path());
-  const auto temp = path.parent_path() / ("." + path.filename().string() + ".tmp");
-  {
-    std::ofstream out{temp, std::ios::binary | std::ios::trunc};
-    out << text;
-    if (!out.flush()) throw std::runtime_error("cannot write " + temp.string());
-  }
-  std::filesystem::rename(temp, path);
-}
-
 std::filesystem::path results_dir(const std::filesystem::path& out) {
   return out / "slurm" / "results";
 }
 
 std::string result_name(Pass pass, int frame) {
-  return fmt::format("{}_{:04d}.json", pass == Pass::image ? "image" : "mask", frame);
+  return fmt::format("{}_{:04d}.json", output::pass_prefix(pass), frame);
 }
 
 json spans_to_json(const std::vector<FrameSpan>& spans) {
@@ -64,19 +56,19 @@ std::string shell_single_quote(const std::string& s) {
   return out + "'";
 }
 
-// A result file as written by a task, applied to the manifest and the summary.
+// Result files as written by tasks, turned into the same events the local runner reports, so the
+// folder's transitions and the progress are recorded by the same callbacks.
 struct Merger {
-  const std::filesystem::path& out;
-  povgen::Manifest& manifest;
-  RenderSummary& summary;
-  const SlurmRenderSettings* settings = nullptr;
+  const FolderState& folder;
+  const RunnerCallbacks& callbacks;
 
   // Returns the number of result files consumed.
   int merge_all() {
+    const auto& out = folder.dir();
     std::error_code ec;
     if (!std::filesystem::is_directory(results_dir(out), ec)) return 0;
+    const auto& identity = folder.manifest().identity;
     int consumed = 0;
-    bool manifest_changed = false;
     for (const auto& entry : std::filesystem::directory_iterator(results_dir(out))) {
       const auto name = entry.path().filename().string();
       if (name.empty() || name[0] == '.' || entry.path().extension() != ".json") continue;
@@ -87,36 +79,31 @@ struct Merger {
         continue;  // renamed into place atomically, so this is not ours: leave it
       }
       const int frame = r.value("frame", 0);
-      const Pass pass = r.value("pass", "image") == "mask" ? Pass::mask : Pass::image;
-      const bool ok = r.value("status", "") == "rendered";
-      for (auto& f : manifest.frames) {
-        if (f.number != frame || pass != Pass::image) continue;
-        // A result made from other inputs than the manifest now names is stale: ignore it.
-        if (r.value("hash", "") != f.input_hash) break;
-        f.status = ok ? "rendered" : "failed";
-        f.rendered_hash = ok ? f.input_hash : std::string{};
-        f.render_seconds = r.value("seconds", 0.0);
-        f.error = r.value("error", "");
-        manifest_changed = true;
-      }
-      if (ok) {
-        ++summary.progress.done;
-      } else {
-        FrameFailure failure;
-        failure.frame = frame;
-        failure.pass = pass;
-        failure.command = r.value("command", "");
-        failure.exit_code = r.value("exit_code", 0);
-        failure.log = r.value("log", "");
-        failure.error_lines = r.value("error_lines", std::vector<std::string>{});
-        ++summary.progress.failed;
-        summary.failures.push_back(failure);
-        if (settings != nullptr && settings->on_failed) settings->on_failed(failure);
-      }
+      const Pass pass = r.value("pass", "frame") == "mask" ? Pass::mask : Pass::image;
+      const auto* f = folder.find(frame);
       std::filesystem::remove(entry.path());
       ++consumed;
+      // A result made from other inputs than the manifest now names is stale: ignore it.
+      if (f == nullptr || r.value("hash", "") != f->input_hash) continue;
+      if (r.value("status", "") == "rendered") {
+        // Verified by the task before it was renamed into place; checked again here, since
+        // the result may be from a run long gone.
+        if (output::image_is_complete(out / final_image_name(pass, frame, folder.digits()),
+                                      identity.width, identity.height)) {
+          callbacks.on_rendered(pass, frame, r.value("seconds", 0.0));
+          continue;
+        }
+      }
+      FrameFailure failure;
+      failure.frame = frame;
+      failure.pass = pass;
+      failure.command = r.value("command", "");
+      failure.exit_code = r.value("exit_code", 0);
+      failure.log = r.value("log", "");
+      failure.error_lines = r.value("error_lines", std::vector<std::string>{});
+      if (failure.error_lines.empty()) failure.error_lines = {"the rendered image is not complete"};
+      callbacks.on_failed(failure);
     }
-    if (manifest_changed) povgen::write_manifest(out / "manifest.json", manifest);
     return consumed;
   }
 };
@@ -160,56 +147,53 @@ std::string sbatch_script(const std::filesystem::path& out_dir,
       out, tasks - 1, out, shell_single_quote(raintrace_exe.string()), shell_single_quote(out));
 }
 
-RenderSummary render_slurm(const std::filesystem::path& out_dir_in,
-                           const SlurmRenderSettings& settings) {
-  const auto out_dir = std::filesystem::absolute(out_dir_in).lexically_normal();
+RenderSummary render_slurm(FolderState& folder, const SlurmRenderSettings& settings) {
+  const auto& out_dir = folder.dir();
   if (!find_program("sbatch") || !find_program("squeue")) {
     throw std::runtime_error(
         "Slurm not found (sbatch/squeue): install slurm-client or use --backend local");
   }
-  const auto manifest_path = out_dir / "manifest.json";
-  povgen::Manifest manifest = povgen::read_manifest(manifest_path);
   RenderSummary summary;
-  // Results of an earlier, interrupted submission count before planning.
-  Merger{out_dir, manifest, summary}.merge_all();
-  summary = {};
-  clean_temp_images(out_dir);
-  const int digits = frame_digits(manifest);
-
-  const auto frames = frames_needing_render(manifest, out_dir, settings.force, settings.only);
-  std::vector<int> masks;
-  if (settings.mask) {
-    for (const auto& f : manifest.frames) {
-      if (settings.only && (f.number < settings.only->first || f.number > settings.only->last)) {
-        continue;
-      }
-      if (settings.force || std::binary_search(frames.begin(), frames.end(), f.number) ||
-          !std::filesystem::exists(out_dir / final_image_name(Pass::mask, f.number, digits))) {
-        masks.push_back(f.number);
-      }
-    }
+  ProgressReporter reporter{settings.on_progress};
+  auto& progress = reporter.progress();
+  const RunnerCallbacks callbacks = folder_callbacks(folder, reporter, summary, settings.on_failed);
+  auto status = [&](const std::string& text) {
+    if (settings.on_status) settings.on_status(text);
+  };
+  {
+    // Results of an earlier, interrupted submission count before planning.
+    RenderSummary earlier;
+    ProgressReporter quiet{nullptr};
+    const RunnerCallbacks record = folder_callbacks(folder, quiet, earlier, nullptr);
+    Merger{folder, record}.merge_all();
   }
-  auto& progress = summary.progress;
-  progress.total = static_cast<int>(frames.size() + masks.size());
-  progress.skipped = static_cast<int>(manifest.frames.size() - frames.size());
-  if (progress.total == 0) return summary;
+  clean_temp_images(out_dir);
+  const output::RenderPlan plan = folder.plan({settings.force, settings.only});
+  if (settings.on_plan) settings.on_plan(plan);
+  progress.total = static_cast<int>(plan.images.size() + plan.masks.size());
+  progress.skipped = plan.up_to_date;
+  auto finish = [&] {
+    reporter.report();
+    summary.progress = progress;
+    return summary;
+  };
+  if (progress.total == 0) return finish();
+  const auto& identity = folder.manifest().identity;
   {
     // Array tasks may start POV-Ray as soon as the job is submitted, so the plate is finished
     // here first; the folder is shared, so the nodes see it.
-    EnvironmentPlate plate{out_dir, manifest.width, manifest.height, settings.stop};
+    EnvironmentPlate plate{out_dir, identity.width, identity.height, settings.stop};
     plate.wait();
     if (plate.interrupted()) {
       summary.interrupted = true;
-      return summary;
+      return finish();
     }
-    if (!plate.problem().empty() && settings.on_status) {
-      settings.on_status(environment_plate_notice(plate));
-    }
+    if (!plate.problem().empty()) status(environment_plate_notice(plate));
   }
 
   int tasks = settings.tasks > 0 ? settings.tasks : std::clamp((progress.total + 7) / 8, 1, 64);
-  const auto image_shares = share_frames(frames, tasks);
-  const auto mask_shares = share_frames(masks, tasks);
+  const auto image_shares = share_frames(plan.images, tasks);
+  const auto mask_shares = share_frames(plan.masks, tasks);
   tasks = static_cast<int>(std::max(image_shares.size(), mask_shares.size()));
   json plan_tasks = json::array();
   for (int t = 0; t < tasks; ++t) {
@@ -224,10 +208,16 @@ RenderSummary render_slurm(const std::filesystem::path& out_dir_in,
   std::filesystem::create_directories(out_dir / "logs");
   std::filesystem::remove_all(results_dir(out_dir));
   std::filesystem::create_directories(results_dir(out_dir));
-  write_atomically(out_dir / "slurm" / "plan.json", json{{"tasks", plan_tasks}}.dump(1) + "\n");
+  // The run id proves to each task that it works for the run holding the folder's lock.
+  povgen::write_file_atomic(
+      out_dir / "slurm" / "plan.json",
+      json{{"run_id", folder.holder().run_id}, {"tasks", plan_tasks}}.dump(1) + "\n");
   const auto script = out_dir / "slurm" / "render.sbatch";
-  write_atomically(script, sbatch_script(out_dir, settings.raintrace_exe, tasks));
+  povgen::write_file_atomic(script, sbatch_script(out_dir, settings.raintrace_exe, tasks));
   prepare_povray_home(out_dir);
+  for (const int f : plan.images) folder.rendering(Pass::image, {f, f});
+  for (const int f : plan.masks) folder.rendering(Pass::mask, {f, f});
+  folder.save();
 
   ProcessSpec submit;
   submit.argv = {"sbatch", "--parsable"};
@@ -241,21 +231,10 @@ RenderSummary render_slurm(const std::filesystem::path& out_dir_in,
     throw std::runtime_error(fmt::format("sbatch failed (exit code {}): {}", submitted.exit_code,
                                          read_text(submit.log_path)));
   }
-  if (settings.on_status) {
-    settings.on_status(fmt::format("submitted Slurm job {} ({} array tasks); logs in {}/logs/",
-                                   job_id, tasks, out_dir.string()));
-  }
+  status(fmt::format("submitted Slurm job {} ({} array tasks); logs in {}/logs/", job_id, tasks,
+                     out_dir.string()));
 
-  const auto start = std::chrono::steady_clock::now();
-  auto report = [&] {
-    progress.elapsed_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const int finished = progress.done + progress.failed;
-    progress.eta_seconds =
-        finished > 0 ? progress.elapsed_seconds / finished * (progress.total - finished) : -1.0;
-    if (settings.on_progress) settings.on_progress(progress);
-  };
-  Merger merger{out_dir, manifest, summary, &settings};
+  Merger merger{folder, callbacks};
   for (;;) {
     if (settings.stop != nullptr && settings.stop->load()) {
       ProcessSpec cancel;
@@ -264,32 +243,23 @@ RenderSummary render_slurm(const std::filesystem::path& out_dir_in,
       while (job_active(job_id)) std::this_thread::sleep_for(std::chrono::milliseconds(200));
       merger.merge_all();
       summary.interrupted = true;
-      report();
-      return summary;
+      return finish();
     }
     const bool active = job_active(job_id);
     merger.merge_all();
-    report();
+    reporter.report();
     if (!active) break;
     std::this_thread::sleep_for(std::chrono::duration<double>(settings.poll_seconds));
   }
 
-  // Frames no result file speaks for: their task died (node failure, time limit, no POV-Ray).
-  const auto plan = json::parse(read_text(out_dir / "slurm" / "plan.json"));
+  // Pictures no result file spoke for: their task died (node failure, time limit, no POV-Ray).
   for (int t = 0; t < tasks; ++t) {
     for (const auto pass : {Pass::image, Pass::mask}) {
       const auto& spans =
-          plan["tasks"][static_cast<std::size_t>(t)][pass == Pass::image ? "images" : "masks"];
+          plan_tasks[static_cast<std::size_t>(t)][pass == Pass::image ? "images" : "masks"];
       for (const auto& span : spans_from_json(spans)) {
         for (int f = span.first; f <= span.last; ++f) {
-          if (std::filesystem::exists(out_dir / final_image_name(pass, f, digits))) {
-            bool recorded = false;
-            for (const auto& e : manifest.frames) {
-              recorded |= pass == Pass::mask || (e.number == f && e.status == "rendered" &&
-                                                 e.rendered_hash == e.input_hash);
-            }
-            if (recorded) continue;
-          }
+          if (folder.decide(pass, f, false) == output::RenderReason::up_to_date) continue;
           bool already = false;
           for (const auto& failure : summary.failures) {
             already |= failure.frame == f && failure.pass == pass;
@@ -303,15 +273,12 @@ RenderSummary render_slurm(const std::filesystem::path& out_dir_in,
           failure.log = fmt::format("logs/slurm_{}_{}.out", job_id, t);
           failure.error_lines = {fmt::format(
               "Slurm task {} ended without a result for this frame (see {})", t, failure.log)};
-          ++progress.failed;
-          summary.failures.push_back(failure);
-          if (settings.on_failed) settings.on_failed(failure);
+          callbacks.on_failed(failure);
         }
       }
     }
   }
-  report();
-  return summary;
+  return finish();
 }
 
 int run_slurm_task(const std::filesystem::path& out_dir_in, int task_index,
@@ -319,13 +286,15 @@ int run_slurm_task(const std::filesystem::path& out_dir_in, int task_index,
   const auto out_dir = std::filesystem::absolute(out_dir_in).lexically_normal();
   require_povray();
   const auto plan = json::parse(read_text(out_dir / "slurm" / "plan.json"));
+  const std::string run_id = plan.value("run_id", "");
+  output::require_lock_held_by(out_dir, run_id);
   const auto& tasks = plan.at("tasks");
   if (task_index < 0 || task_index >= static_cast<int>(tasks.size())) {
     throw std::runtime_error(fmt::format("Slurm task {} is not in {}/slurm/plan.json (0..{})",
                                          task_index, out_dir.string(), tasks.size() - 1));
   }
-  // Read-only here: only the submitting raintrace writes the manifest.
-  const auto manifest = povgen::read_manifest(out_dir / "manifest.json");
+  // Read-only here: only the submitting raintrace changes the folder's state.
+  const auto manifest = output::read_manifest(out_dir / output::kManifest);
   std::map<int, std::string> hash_of;
   for (const auto& f : manifest.frames) hash_of[f.number] = f.input_hash;
 
@@ -336,34 +305,32 @@ int run_slurm_task(const std::filesystem::path& out_dir_in, int task_index,
 
   RunnerSettings runner;
   runner.jobs = 1;  // Slurm gave this task its share of the node; POV-Ray traces multi-threaded
-  runner.width = manifest.width;
-  runner.height = manifest.height;
-  runner.digits = frame_digits(manifest);
+  runner.width = manifest.identity.width;
+  runner.height = manifest.identity.height;
+  runner.digits = output::frame_digits(manifest);
   runner.stop = stop;
   bool all_ok = true;
+  auto write_result = [&](Pass pass, int frame, json result) {
+    result["frame"] = frame;
+    result["pass"] = output::pass_prefix(pass);
+    result["hash"] = hash_of[frame];
+    result["run_id"] = run_id;
+    povgen::write_file_atomic(results_dir(out_dir) / result_name(pass, frame), result.dump());
+  };
   RunnerCallbacks callbacks;
+  callbacks.on_started = [&](const RenderJob&) { output::require_lock_held_by(out_dir, run_id); };
   callbacks.on_rendered = [&](Pass pass, int frame, double seconds) {
-    write_atomically(results_dir(out_dir) / result_name(pass, frame),
-                     json{{"frame", frame},
-                          {"pass", pass == Pass::image ? "image" : "mask"},
-                          {"status", "rendered"},
-                          {"hash", hash_of[frame]},
-                          {"seconds", seconds}}
-                         .dump());
+    write_result(pass, frame, {{"status", "rendered"}, {"seconds", seconds}});
   };
   callbacks.on_failed = [&](const FrameFailure& failure) {
     all_ok = false;
-    write_atomically(results_dir(out_dir) / result_name(failure.pass, failure.frame),
-                     json{{"frame", failure.frame},
-                          {"pass", failure.pass == Pass::image ? "image" : "mask"},
-                          {"status", "failed"},
-                          {"hash", hash_of[failure.frame]},
-                          {"command", failure.command},
-                          {"exit_code", failure.exit_code},
-                          {"log", failure.log},
-                          {"error_lines", failure.error_lines},
-                          {"error", failure.summary()}}
-                         .dump());
+    write_result(failure.pass, failure.frame,
+                 {{"status", "failed"},
+                  {"command", failure.command},
+                  {"exit_code", failure.exit_code},
+                  {"log", failure.log},
+                  {"error_lines", failure.error_lines},
+                  {"error", failure.summary()}});
   };
   const bool finished = run_povray_jobs(out_dir, std::move(jobs), runner, callbacks);
   return finished && all_ok ? 0 : 1;

@@ -8,14 +8,28 @@
 #include <unistd.h>
 #include <cstdlib>
 
-#include "povgen/manifest.h"
+#include "output/folder_state.h"
+#include "output/image_check.h"
 #include "render/environment_plate.h"
-#include "render/image_check.h"
+#include "render/local_render.h"
 #include "render/process.h"
 #include "render/test_folder.h"
 
 namespace raintrace::render {
 namespace {
+
+using output::image_is_complete;
+
+/// Opens the folder as `raintrace render DIR --backend slurm` does and renders it.
+RenderSummary render_slurm(const std::filesystem::path& dir, const SlurmRenderSettings& s) {
+  auto folder = output::FolderState::open(dir, "test");
+  return render::render_slurm(folder, s);
+}
+
+RenderSummary render_local(const std::filesystem::path& dir, const LocalRenderSettings& s) {
+  auto folder = output::FolderState::open(dir, "test");
+  return render::render_local(folder, s);
+}
 
 TEST(ShareFrames, SplitsIntoNearlyEqualContiguousShares) {
   // 10 frames over 4 tasks: boundaries at floor(t·10/4) = 0, 2, 5, 7, 10 → sizes 2, 3, 2, 3.
@@ -98,17 +112,17 @@ TEST_F(SlurmRender, JobArrayRendersTheSamePixelsAsLocal) {
   const auto summary = render_slurm(dir / "slurm", settings);
   ASSERT_TRUE(summary.failures.empty()) << summary.failures[0].summary();
   EXPECT_EQ(last_done, 6);
-  const auto manifest = povgen::read_manifest(dir / "slurm/manifest.json");
+  const auto manifest = output::read_manifest(dir / "slurm/manifest.json");
   for (const auto& f : manifest.frames) {
-    EXPECT_EQ(f.status, "rendered");
-    EXPECT_EQ(f.rendered_hash, f.input_hash);
+    EXPECT_EQ(f.image.status, output::FrameStatus::rendered);
+    EXPECT_EQ(f.image.rendered_hash, f.input_hash);
     // PNG bytes differ by timestamps (POVRAY-NOTES): compare decoded pixels exactly.
-    OIIO::ImageBuf a{(dir / "local" / f.image).string()};
-    OIIO::ImageBuf b{(dir / "slurm" / f.image).string()};
+    OIIO::ImageBuf a{(dir / "local" / f.image.path).string()};
+    OIIO::ImageBuf b{(dir / "slurm" / f.image.path).string()};
     const auto cmp = OIIO::ImageBufAlgo::compare(a, b, 0.0f, 0.0f);
-    EXPECT_FALSE(cmp.error) << f.image;
-    EXPECT_EQ(cmp.nfail, 0U) << f.image;
-    EXPECT_EQ(cmp.maxerror, 0.0) << f.image;
+    EXPECT_FALSE(cmp.error) << f.image.path;
+    EXPECT_EQ(cmp.nfail, 0U) << f.image.path;
+    EXPECT_EQ(cmp.maxerror, 0.0) << f.image.path;
   }
   // A second submission finds nothing to do and submits nothing.
   EXPECT_EQ(render_slurm(dir / "slurm", settings).progress.total, 0);
@@ -151,7 +165,8 @@ TEST_F(SlurmRender, AFailingFrameIsReportedFromItsTask) {
   EXPECT_EQ(summary.failures[0].error_lines.at(0).rfind("File 'frames/frame_0002.pov' line 2", 0),
             0U);
   EXPECT_EQ(summary.progress.done, 3);
-  EXPECT_EQ(povgen::read_manifest(dir / "out/manifest.json").frames[1].status, "failed");
+  EXPECT_EQ(output::read_manifest(dir / "out/manifest.json").frames[1].image.status,
+            output::FrameStatus::failed);
 }
 
 }  // namespace

@@ -7,7 +7,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "povgen/manifest.h"
+#include "output/layout.h"
+#include "output/manifest.h"
+#include "output/test_dir.h"
+#include "povgen/content_hash.h"
 #include "render/process.h"
 
 namespace raintrace::render::testing {
@@ -105,43 +108,46 @@ void write_test_folder(const std::filesystem::path& dir, const TestFolderSpec& s
              "#ifndef (RT_Mask) #declare RT_Mask = 0; #end\n"
              "#if (RT_Mask) #default { finish { ambient 1 diffuse 0 } } #end\n");
   if (spec.plate) write_plate_files(dir, spec);
-  povgen::Manifest manifest;
+  output::Manifest manifest;
   manifest.raintrace_version = "test";
-  manifest.width = spec.width;
-  manifest.height = spec.height;
-  manifest.fps = 24;
-  manifest.quality = "preview";
+  manifest.identity.width = spec.width;
+  manifest.identity.height = spec.height;
+  manifest.identity.fps = 24;
+  manifest.identity.masks = spec.masks;
+  manifest.frame_count = spec.frames;
   for (int f = 1; f <= spec.frames; ++f) {
     const std::string text = frame_text(f, spec.spheres);
-    povgen::FrameEntry entry;
+    output::FrameEntry entry;
     entry.number = f;
-    entry.scene = fmt::format("frames/frame_{:04d}.pov", f);
-    entry.image = fmt::format("images/frame_{:04d}.png", f);
+    entry.image.scene = output::frame_scene_name(output::Pass::image, f);
+    entry.image.path = output::final_image_name(output::Pass::image, f);
     entry.input_hash = povgen::content_hash(text);
-    write_file(dir / entry.scene, text);
-    write_file(dir / fmt::format("frames/mask_{:04d}.pov", f),
-               fmt::format("#declare RT_Mask = 1;\n#include \"frames/frame_{:04d}.pov\"\n", f));
+    write_file(dir / entry.image.scene, text);
+    if (spec.masks) {
+      output::PictureRecord mask;
+      mask.scene = output::frame_scene_name(output::Pass::mask, f);
+      mask.path = output::final_image_name(output::Pass::mask, f);
+      write_file(dir / mask.scene,
+                 fmt::format("#declare RT_Mask = 1;\n#include \"frames/frame_{:04d}.pov\"\n", f));
+      entry.mask = mask;
+    }
     manifest.frames.push_back(entry);
   }
-  povgen::write_manifest(dir / "manifest.json", manifest);
+  output::write_manifest(dir / output::kManifest, manifest);
 }
 
 void replace_frame(const std::filesystem::path& dir, int frame, const std::string& text) {
-  auto manifest = povgen::read_manifest(dir / "manifest.json");
+  auto manifest = output::read_manifest(dir / output::kManifest);
   for (auto& entry : manifest.frames) {
     if (entry.number != frame) continue;
-    write_file(dir / entry.scene, text);
+    write_file(dir / entry.image.scene, text);
     entry.input_hash = povgen::content_hash(text);
   }
-  povgen::write_manifest(dir / "manifest.json", manifest);
+  output::write_manifest(dir / output::kManifest, manifest);
 }
 
 std::filesystem::path fresh_test_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   fmt::format("raintrace_render_test_{}_{}", name, ::getpid());
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
+  return output::testing::fresh_test_dir("render_" + name);
 }
 
 bool system_has_povray() { return find_program("povray").has_value(); }

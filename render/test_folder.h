@@ -1,6 +1,6 @@
-// Test helper: writes a tiny hand-made output folder in the layout of shared/DESIGN.md
-// (scene.ini, scene.pov dispatcher, frames/frame_NNNN.pov, manifest.json), so render/ can be
-// tested without the simulator or the exporter.
+// Test helper: writes a tiny hand-made output folder in the exporter's layout (scene.ini,
+// scene.pov dispatcher, frames/frame_NNNN.pov, manifest.json), so render/ can be tested without
+// the simulator or the exporter.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -14,6 +14,9 @@ struct TestFolderSpec {
   int width = 64;
   int height = 36;
   int spheres = 200;  ///< per frame; more makes each frame slower to parse and trace
+  /// Write mask.ini, mask.pov and frames/mask_NNNN.pov, and list masks in the manifest, as the
+  /// exporter does for a scene exported with masks.
+  bool masks = false;
   /// Also write plate.ini, plate.pov and environment.inc as the preview exporter does: scene.inc
   /// then draws textures/environment_plate.png when it is there at width×height, and otherwise
   /// includes environment.inc. Each frame says which in its log (#debug): "raintrace:
@@ -24,7 +27,8 @@ struct TestFolderSpec {
 /// Creates (replacing) dir with the folder; each frame is a different, deterministic scene.
 void write_test_folder(const std::filesystem::path& dir, const TestFolderSpec& spec = {});
 
-/// Rewrites one frame's .pov with `text` and updates its input_hash in manifest.json.
+/// Rewrites one frame's .pov with `text` and updates its input_hash in manifest.json (as an
+/// export whose frame changed would).
 void replace_frame(const std::filesystem::path& dir, int frame, const std::string& text);
 
 /// True when `povray` is in PATH.

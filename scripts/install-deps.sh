@@ -13,6 +13,9 @@ packages=(
   nlohmann-json3-dev                       # stats, manifest.json, compare reports
   libgtest-dev libgmock-dev libbenchmark-dev
   ffmpeg                                   # MP4 and GIF of a rendered animation
+  blender-data                             # Blender's Filmic OpenColorIO configuration, which
+                                           # develops HDR frames (film/); only its data, not
+                                           # Blender (~100 MB installed)
   time                                     # /usr/bin/time in bench/*.sh
 )
 if [[ ${1:-} == --test ]]; then

@@ -1,11 +1,15 @@
-// Everything the simulation can be told, one struct per concern, with units, ranges and
-// defaults. cli/ fills these from the scene file; nothing here knows about files.
+// Everything the simulation can be told, one struct per concern. Below each struct, its
+// parameter table (sim/param_table.h) gives every scene-file key its unit and valid range;
+// defaults are the member initialisers. cli/ fills these from the scene file; nothing here
+// knows about files.
 #pragma once
 
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <string_view>
 
 #include "sim/camera.h"
+#include "sim/param_table.h"
 
 namespace raintrace::sim {
 
@@ -13,89 +17,165 @@ enum class DropSizeDistribution {
   marshall_palmer,  ///< N(D) = N0·e^(−ΛD), N0 = 8000 m⁻³mm⁻¹, Λ = 4.1·R^−0.21 mm⁻¹
   uniform,          ///< the paper's choice: uniform in [diameter_min_mm, diameter_max_mm]
 };
+/// Scene-file names of DropSizeDistribution, in the order of its values.
+inline constexpr std::string_view kDropSizeDistributionNames[] = {"marshall-palmer", "uniform"};
 
 struct RainParams {
-  /// Rain rate at the ground, mm/h, in [0, 500]. Default 5 (moderate rain).
+  /// Rain rate at the ground (moderate rain by default).
   double rate_mm_per_h = 5.0;
-  /// How drop diameters are drawn. Default Marshall-Palmer.
+  /// How drop diameters are drawn.
   DropSizeDistribution distribution = DropSizeDistribution::marshall_palmer;
-  /// Smallest drop diameter, mm, in [0.1, 8]. Default 0.5.
+  /// Smallest drop diameter.
   double diameter_min_mm = 0.5;
-  /// Largest drop diameter, mm, in [diameter_min_mm, 8]. Default 6.
+  /// Largest drop diameter.
   double diameter_max_mm = 6.0;
-  /// Drops are simulated in the camera's frustum from near_m to far_m, metres. Default 0.3.
+  /// Drops are simulated in the camera's frustum from near_m…
   double near_m = 0.3;
-  /// Far end of the simulated frustum, metres, in (near_m, 1000]; beyond it fog/mist stands
-  /// for the rain. Default 12.
+  /// …to far_m; beyond it fog or mist stands for the rain.
   double far_m = 12.0;
-  /// Height of the spawn ceiling above the highest point of the view volume, metres, >= 0.
-  /// Default 2 (drops enter the view already at terminal speed).
+  /// Height of the spawn ceiling above the highest point of the view volume, so drops enter
+  /// the view already at terminal speed.
   double ceiling_margin_m = 2.0;
-  /// Merging of drops that meet on the way down (paper §3.3). Default true.
+  /// Merging of drops that meet on the way down (paper §3.3).
   bool merging = true;
-  /// Diameter past which a drop breaks up into smaller ones, mm, in [4, 10]. Default 6.5.
+  /// Diameter past which a drop breaks up into smaller ones.
   double breakup_diameter_mm = 6.5;
-  /// Rate at which a drop fades (paper's vanishing), 1/s, in [0, 100]. Default 0 (no fading).
+  /// Rate at which a drop fades (paper's vanishing); 0: no fading.
   double vanishing_rate_per_s = 0.0;
-  /// Linear RGB tint of the water, each in [0, 1]. Default (0.9, 0.95, 1).
+  /// Linear RGB tint of the water.
   glm::dvec3 colour{0.9, 0.95, 1.0};
 };
 
+/// [rain]
+inline constexpr Param<RainParams> kRainParams[] = {
+    number("rain", "rate_mm_per_h", &RainParams::rate_mm_per_h, "mm/h", Range::closed(0, 500)),
+    choice<&RainParams::distribution>("rain", "distribution", kDropSizeDistributionNames),
+    number("rain", "diameter_min_mm", &RainParams::diameter_min_mm, "mm", Range::closed(0.1, 8))
+        .at_most("diameter_max_mm"),
+    number("rain", "diameter_max_mm", &RainParams::diameter_max_mm, "mm", Range::closed(0.1, 8)),
+    number("rain", "near_m", &RainParams::near_m, "m", Range::open(0, 1000)),
+    number("rain", "far_m", &RainParams::far_m, "m", Range::open_closed(0, 1000))
+        .greater_than("near_m"),
+    number("rain", "ceiling_margin_m", &RainParams::ceiling_margin_m, "m", Range::closed(0, 1000)),
+    flag("rain", "merging", &RainParams::merging),
+    number("rain", "breakup_diameter_mm", &RainParams::breakup_diameter_mm, "mm",
+           Range::closed(4, 10)),
+    number("rain", "vanishing_rate_per_s", &RainParams::vanishing_rate_per_s, "1/s",
+           Range::closed(0, 100)),
+    colour("rain", "colour", &RainParams::colour),
+};
+static_assert(well_formed<RainParams>(kRainParams));
+
 struct WindParams {
-  /// Steady wind velocity, m/s, each component in [-60, 60]. Default (0, 0, 0).
+  /// Steady wind velocity; still air by default.
   glm::dvec3 velocity_m_per_s{0.0, 0.0, 0.0};
-  /// Add the paper's gust function w(t) (eq. 5). Default false.
+  /// Add the paper's gust function w(t) (eq. 5).
   bool gusts = false;
-  /// Scale of the gust function, m/s per unit of w(t), in [0, 500]. Default 20.
+  /// Scale of the gust function, m/s per unit of w(t).
   double gust_strength = 20.0;
-  /// Horizontal direction the gusts push along (normalised; y ignored). Default (1, 0, 0).
+  /// Horizontal direction the gusts push along (normalised; y ignored).
   glm::dvec3 gust_direction{1.0, 0.0, 0.0};
-  /// Amplitude of smooth spatial turbulence, m/s, in [0, 30]. Default 0 (off).
+  /// Amplitude (RMS speed) of smooth spatial turbulence; 0: off.
   double turbulence_m_per_s = 0.0;
-  /// Length scale of the turbulence, metres, in [0.1, 100]. Default 4.
+  /// Length scale of the turbulence.
   double turbulence_scale_m = 4.0;
 };
 
+/// [wind]
+inline constexpr Param<WindParams> kWindParams[] = {
+    vector("wind", "velocity_m_per_s", &WindParams::velocity_m_per_s, "m/s",
+           Range::closed(-60, 60)),
+    flag("wind", "gusts", &WindParams::gusts),
+    number("wind", "gust_strength", &WindParams::gust_strength, "m/s", Range::closed(0, 500)),
+    vector("wind", "gust_direction", &WindParams::gust_direction, "", Range::closed(-1000, 1000))
+        .with_note("x or z ≠ 0"),
+    number("wind", "turbulence_m_per_s", &WindParams::turbulence_m_per_s, "m/s",
+           Range::closed(0, 30)),
+    number("wind", "turbulence_scale_m", &WindParams::turbulence_scale_m, "m",
+           Range::closed(0.1, 100)),
+};
+static_assert(well_formed<WindParams>(kWindParams));
+
+/// True when a gust direction points somewhere horizontally (x or z not 0; y is ignored).
+bool is_horizontal_direction(const glm::dvec3& direction);
+
 struct SplashParams {
-  /// Drops hitting the ground end in splashes. Default true.
+  /// Drops hitting the ground end in splashes.
   bool enabled = true;
-  /// Droplets per splash, in [0, 32]. Default 4.
+  /// Droplets per splash.
   int droplets = 4;
-  /// How long splash droplets live, seconds, in (0, 2]. Default 0.15.
+  /// How long splash droplets live.
   double lifetime_s = 0.15;
 };
 
+/// [splashes]
+inline constexpr Param<SplashParams> kSplashParams[] = {
+    flag("splashes", "enabled", &SplashParams::enabled),
+    integer("splashes", "droplets", &SplashParams::droplets, "", 0, 32),
+    number("splashes", "lifetime_s", &SplashParams::lifetime_s, "s", Range::open_closed(0, 2)),
+};
+static_assert(well_formed<SplashParams>(kSplashParams));
+
 struct LightningParams {
-  /// Lightning on or off. Default false.
+  /// Lightning on or off.
   bool enabled = false;
-  /// Mean strike rate of the Poisson process, strikes per minute, in [0, 600]. Default 6.
+  /// Mean strike rate of the Poisson process.
   double strikes_per_minute = 6.0;
-  /// L-system generations (trunk = 0, branches, sub-branches…), in [1, 8]. Default 5.
+  /// L-system generations (trunk = 0, branches, sub-branches…).
   int generations = 5;
-  /// Height of the cloud base where bolts start, metres, in [10, 5000]. Default 300.
+  /// Height of the cloud base where bolts start.
   double cloud_height_m = 300.0;
   /// Where strikes land, as seen from the camera: degrees from its horizontal view direction,
-  /// positive to the right, in [-180, 180]. The first strike lands exactly there. Default 0.
+  /// positive to the right. The clip's first strike lands exactly there.
   double azimuth_deg = 0.0;
-  /// Later strikes land within ± this of azimuth_deg (uniformly), degrees, in [0, 180].
-  /// Default 25.
+  /// Later strikes land within ± this of azimuth_deg (uniformly).
   double azimuth_spread_deg = 25.0;
-  /// Horizontal distance of the first strike from the camera, metres, in [0, 10000].
-  /// Default 400.
+  /// Horizontal distance of the clip's first strike from the camera.
   double distance_m = 400.0;
-  /// Horizontal distance of later strikes from the camera, metres: [min, max]. Default 80..400.
+  /// Horizontal distance of later strikes from the camera: [min, max].
   double distance_min_m = 80.0;
   double distance_max_m = 400.0;
-  /// Radius of the trunk, metres, in (0, 10]. Default 0.6.
+  /// Radius of the trunk.
   double trunk_radius_m = 0.6;
-  /// Return strokes per flash, in [1, 10]. Default 3.
+  /// Return strokes per flash.
   int return_strokes = 3;
-  /// Length of a flash, seconds, in [0.05, 2]. Default 0.35.
+  /// Length of a flash.
   double flash_duration_s = 0.35;
-  /// Force a strike at this time, seconds; < 0 means none. Default -1. Lets a short example
-  /// show lightning deterministically.
+  /// Force a strike at this time; < 0 means none. Lets a short example show lightning
+  /// deterministically.
   double first_strike_s = -1.0;
 };
+
+/// [lightning] (its `light` key is povgen's: povgen/export_params.h)
+inline constexpr Param<LightningParams> kLightningParams[] = {
+    flag("lightning", "enabled", &LightningParams::enabled),
+    number("lightning", "strikes_per_minute", &LightningParams::strikes_per_minute, "1/min",
+           Range::closed(0, 600)),
+    integer("lightning", "generations", &LightningParams::generations, "", 1, 8),
+    number("lightning", "cloud_height_m", &LightningParams::cloud_height_m, "m",
+           Range::closed(10, 5000)),
+    number("lightning", "azimuth_deg", &LightningParams::azimuth_deg, "°",
+           Range::closed(-180, 180)),
+    number("lightning", "azimuth_spread_deg", &LightningParams::azimuth_spread_deg, "°",
+           Range::closed(0, 180)),
+    // Beyond 10 km a bolt from a cloud base of at most 5 km is a few pixels tall and its
+    // flash, as the environments light it, no longer reaches the street.
+    number("lightning", "distance_m", &LightningParams::distance_m, "m", Range::closed(0, 10000)),
+    number("lightning", "distance_min_m", &LightningParams::distance_min_m, "m",
+           Range::closed(0, 10000))
+        .at_most("distance_max_m"),
+    number("lightning", "distance_max_m", &LightningParams::distance_max_m, "m",
+           Range::closed(0, 10000)),
+    number("lightning", "trunk_radius_m", &LightningParams::trunk_radius_m, "m",
+           Range::open_closed(0, 10)),
+    integer("lightning", "return_strokes", &LightningParams::return_strokes, "", 1, 10),
+    number("lightning", "flash_duration_s", &LightningParams::flash_duration_s, "s",
+           Range::closed(0.05, 2)),
+    // Negative means "no forced strike"; the upper bound only keeps the number sane.
+    number("lightning", "first_strike_s", &LightningParams::first_strike_s, "s",
+           Range::at_most(1e6)),
+};
+static_assert(well_formed<LightningParams>(kLightningParams));
 
 struct SimParams {
   Camera camera;
@@ -103,19 +183,34 @@ struct SimParams {
   WindParams wind;
   SplashParams splashes;
   LightningParams lightning;
-  /// Height of the ground plane, metres. Default 0.
+  /// Height of the ground plane.
   double ground_y_m = 0.0;
-  /// Integration substep, seconds, in [1e-4, 0.02]. Frames are advanced in whole substeps, so
-  /// results do not depend on the frame rate. Default 0.002.
+  /// Integration substep. Frames are advanced in whole substeps, so results do not depend on
+  /// the frame rate.
   double substep_s = 0.002;
-  /// Simulated time before frame 1 so the volume is already full of falling rain, seconds,
-  /// in [0, 60]. Default −1: World picks max(0.2, splashes.lifetime_s + 0.05) — the volume
-  /// is filled at steady-state density first, so only splashes and merging need the time.
+  /// Simulated time before frame 1 so the volume is already full of falling rain. The default
+  /// (−1, "automatic") lets World pick max(0.2, splashes.lifetime_s + 0.05): the volume is
+  /// filled at steady-state density first, so only splashes and merging need the time.
   double prewarm_s = -1.0;
-  /// Worker threads for a step; 0 = all cores. Results never depend on it.
+  /// Worker threads for a step, in [0, 1024]; 0 = all cores. Results never depend on it. Not a
+  /// scene-file key.
   int threads = 0;
-  /// Seed of every random stream. Default 1.
+  /// Seed of every random stream.
   std::uint64_t seed = 1;
 };
+
+/// The top-level `seed` and [simulation]; the other sections have their own tables above.
+inline constexpr Param<SimParams> kSimParams[] = {
+    seed("", "seed", &SimParams::seed),
+    number("simulation", "substep_s", &SimParams::substep_s, "s", Range::closed(1e-4, 0.02)),
+    number("simulation", "prewarm_s", &SimParams::prewarm_s, "s", Range::closed(0, 60))
+        .unset_as("automatic"),
+    number("simulation", "ground_y_m", &SimParams::ground_y_m, "m", kCoordinates),
+};
+static_assert(well_formed<SimParams>(kSimParams));
+
+/// Throws std::invalid_argument naming the first field out of its range (the tables above),
+/// e.g. "rain.far_m must be > rain.near_m (got 0.2 <= 0.3)". World's constructor calls it.
+void validate(const SimParams& params);
 
 }  // namespace raintrace::sim

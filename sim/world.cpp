@@ -46,8 +46,9 @@ double default_prewarm(const SimParams& p) {
 
 }  // namespace
 
-World::World(const SimParams& params)
+World::World(const SimParams& params, const std::atomic<bool>* cancel)
     : m_params(params),
+      m_cancel(cancel),
       m_view((validate(params), params.camera), params.rain.near_m, params.rain.far_m),
       m_wind(make_wind(params)),
       m_sizes(params.rain),
@@ -67,7 +68,30 @@ World::World(const SimParams& params)
   m_merge_every = std::max(1, static_cast<int>(std::lround(kMergeInterval_s / m_params.substep_s)));
   m_events.resize(static_cast<std::size_t>(thread_count()));
   fill();
-  while (m_step < m_prewarm_steps) step();
+  while (m_step < m_prewarm_steps) {
+    check_cancel();
+    step();
+  }
+}
+
+WorkEstimate World::estimate(const SimParams& params) {
+  validate(params);
+  const ViewVolume view(params.camera, params.rain.near_m, params.rain.far_m);
+  const DropSizeModel sizes(params.rain);
+  const SpawnRegion region(
+      view, params.ground_y_m, params.rain.ceiling_margin_m,
+      glm::dvec3{params.wind.velocity_m_per_s.x, 0.0, params.wind.velocity_m_per_s.z},
+      wind_spread(params.wind), terminal_velocity(params.rain.diameter_min_mm * 1e-3));
+  WorkEstimate e;
+  e.drops = sizes.number_density_per_m3() * region.volume_m3();
+  e.drops_in_view = sizes.number_density_per_m3() * view.volume_m3();
+  const double prewarm = params.prewarm_s < 0.0 ? default_prewarm(params) : params.prewarm_s;
+  e.prewarm_steps = std::round(prewarm / params.substep_s);
+  return e;
+}
+
+void World::check_cancel() const {
+  if (m_cancel != nullptr && m_cancel->load(std::memory_order_relaxed)) throw Cancelled{};
 }
 
 int World::thread_count() const {
@@ -86,6 +110,7 @@ void World::fill() {
   const glm::dvec3 wind = m_wind.uniform_at(time_s());
   const auto rate = static_cast<float>(m_params.rain.vanishing_rate_per_s);
   for (std::size_t k = 0; k < n; ++k) {
+    if (k % 65536 == 0) check_cancel();  // tens of millions of drops take seconds
     const std::uint64_t id = m_next_id++;
     auto u = [&](int dim) { return uniform(m_params.seed, Stream::fill, id, dim); };
     const double d = m_sizes.sample_in_air(u(0));
@@ -240,7 +265,10 @@ void World::advance_to(double t_s) {
   const double steps = (t_s - time_s()) / m_params.substep_s + 1e-6;
   if (!(steps >= 1.0)) return;
   const auto target = m_step + static_cast<std::int64_t>(std::floor(steps));
-  while (m_step < target) step();
+  while (m_step < target) {
+    check_cancel();
+    step();
+  }
 }
 
 Frame World::snapshot(int frame_index) const {

@@ -5,10 +5,14 @@
 //   Frame frame = world.snapshot(index); // copy of the state for the exporter
 // The constructor fills the simulated box with rain at its steady-state density and then runs
 // the prewarm, so time_s() == 0 afterwards and the first frame is already full of rain.
+// A caller that must stay responsive (Ctrl-C during a long prewarm) hands the World a cancel
+// flag: the stepping loops check it between substeps and throw sim::Cancelled once it is set.
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <vector>
 
 #include "sim/drop_size.h"
@@ -24,9 +28,22 @@
 
 namespace raintrace::sim {
 
-/// Throws std::invalid_argument naming the first field out of range, e.g.
-/// "rain.far_m must be > rain.near_m (got 0.2 <= 0.3)".
-void validate(const SimParams& params);
+/// Thrown by World's stepping loops (constructor, advance_to) once its cancel flag is set.
+class Cancelled : public std::exception {
+ public:
+  [[nodiscard]] const char* what() const noexcept override { return "simulation cancelled"; }
+};
+
+/// What a scene asks of the simulation, known before any drop exists (World::estimate).
+struct WorkEstimate {
+  double drops = 0.0;          ///< drops simulated at steady state (in view or drifting into it)
+  double drops_in_view = 0.0;  ///< of those, inside the view frustum [near_m, far_m]
+  double prewarm_steps = 0.0;  ///< substeps before t = 0
+  /// Substeps from the start of the prewarm to time t_s.
+  [[nodiscard]] double steps_until(double t_s, double substep_s) const {
+    return prewarm_steps + (t_s > 0.0 ? t_s / substep_s : 0.0);
+  }
+};
 
 class World {
  public:
@@ -34,7 +51,13 @@ class World {
   /// rain.rate_mm_per_h).
   static constexpr double kMaxDrops = 50.0e6;
 
-  explicit World(const SimParams& params);
+  /// cancel: when set (to true, by any thread), the prewarm and advance_to() stop at the next
+  /// substep by throwing Cancelled; null = never cancelled.
+  explicit World(const SimParams& params, const std::atomic<bool>* cancel = nullptr);
+
+  /// The drop counts and prewarm length World(params) would have, from the same formulas but
+  /// without simulating (cheap). Throws std::invalid_argument like the constructor for bad params.
+  static WorkEstimate estimate(const SimParams& params);
 
   /// Advances in whole substeps to the last substep boundary at or before t_s (to within
   /// 1e-6 of a substep). A time in the past is a no-op: the world never runs backwards.
@@ -65,8 +88,10 @@ class World {
   void spawn(double t_s);
   void handle_events(double t_end_s);
   [[nodiscard]] int thread_count() const;
+  void check_cancel() const;
 
   SimParams m_params;
+  const std::atomic<bool>* m_cancel;
   ViewVolume m_view;
   Wind m_wind;
   DropSizeModel m_sizes;

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -52,6 +53,36 @@ TEST(World, RejectsOutOfRangeFieldsByName) {
   p = small_scene();
   p.lightning.generations = 9;
   EXPECT_NE(error_of(p).find("lightning.generations"), std::string::npos);
+}
+
+TEST(World, ACancelFlagStopsThePrewarmAndAdvanceBetweenSubsteps) {
+  SimParams p = small_scene();
+  p.prewarm_s = 60.0;  // 300 000 substeps: never finished if the flag were not checked
+  p.substep_s = 2e-4;
+  std::atomic<bool> cancel{true};
+  EXPECT_THROW(World(p, &cancel), Cancelled);
+  p.prewarm_s = 0.0;
+  cancel = false;
+  World world(p, &cancel);
+  world.advance_to(0.01);
+  const double t = world.time_s();
+  cancel = true;
+  EXPECT_THROW(world.advance_to(1e9), Cancelled);  // fps = 1e-9: frame 2 lies at 1e9 s
+  EXPECT_LT(world.time_s(), t + 1e-3);             // stopped at the first substep check
+}
+
+TEST(World, EstimateMatchesWhatTheWorldHolds) {
+  // World::estimate is what budgets are made from: it must be the count the World fills to
+  // (up to the drops the fill leaves out because they cannot reach the view: an upper bound).
+  SimParams p = small_scene();
+  const WorkEstimate e = World::estimate(p);
+  const World world(p);
+  EXPECT_GE(e.drops, static_cast<double>(world.drops().size()) * 0.9);
+  EXPECT_LE(static_cast<double>(world.drops().size()), e.drops * 1.3);
+  const double in_view = static_cast<double>(world.snapshot(1).drops.size());
+  EXPECT_NEAR(in_view, e.drops_in_view, 0.1 * e.drops_in_view);
+  EXPECT_DOUBLE_EQ(e.prewarm_steps, std::round(p.prewarm_s / p.substep_s));
+  EXPECT_DOUBLE_EQ(e.steps_until(1.0, p.substep_s), e.prewarm_steps + 1.0 / p.substep_s);
 }
 
 TEST(World, FirstFrameIsAlreadyFullOfRain) {

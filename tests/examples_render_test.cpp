@@ -12,8 +12,11 @@
 #include <string>
 #include <vector>
 
-#include "cli/export_pipeline.h"
+#include "cli/folder_run.h"
 #include "cli/scene.h"
+#include "output/budget.h"
+#include "output/export.h"
+#include "output/folder_state.h"
 
 namespace raintrace {
 namespace {
@@ -49,7 +52,12 @@ std::vector<float> export_and_render(cli::Scene scene, const fs::path& dir) {
   scene.sim.prewarm_s = 0.0;
   scene.sim.substep_s = 0.01;
   fs::remove_all(dir);
-  cli::export_scene(scene, cli::FrameRange{1, 1}, dir);
+  {
+    const output::SceneToExport e = cli::scene_to_export(scene);
+    auto folder =
+        output::FolderState::claim(dir, output::identity_of(scene.text, e), false, "test");
+    output::export_frames(folder, e, {1, 1});
+  }
   const std::string command =
       "cd '" + dir.string() + "' && povray scene.ini +SF1 +EF1 -D -V >povray.log 2>&1";
   EXPECT_EQ(std::system(command.c_str()), 0) << "povray failed in " << dir;
@@ -57,6 +65,16 @@ std::vector<float> export_and_render(cli::Scene scene, const fs::path& dir) {
 }
 
 class ExampleRender : public ::testing::TestWithParam<fs::path> {};
+
+TEST_P(ExampleRender, FitsTheDefaultMemoryAndWorkLimitsWithRoomToSpare) {
+  // The limits (output/budget.h) stop runaway scenes; no example may come near them, rendered
+  // whole with the default 4 POV-Ray processes.
+  const cli::Scene scene = cli::load_scene_file(GetParam());
+  const auto e = cli::scene_to_export(scene);
+  const output::Budget b = output::estimate_budget(e, {1, scene.frames}, 4);
+  EXPECT_LT(b.total_bytes(), output::default_max_memory_bytes() / 4) << GetParam();
+  EXPECT_LT(b.drop_steps, output::BudgetLimits{}.max_drop_steps / 100) << GetParam();
+}
 
 TEST_P(ExampleRender, RendersRainThatChangesThePicture) {
   if (!have_povray()) GTEST_SKIP() << "povray is not installed: example renders skipped";

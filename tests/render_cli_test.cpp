@@ -10,48 +10,30 @@
 #include <sstream>
 #include <thread>
 
-#include "povgen/manifest.h"
-#include "render/image_check.h"
+#include "output/image_check.h"
+#include "output/manifest.h"
 #include "render/povray_command.h"
 #include "render/process.h"
 #include "render/test_folder.h"
+#include "tests/cli_test_support.h"
 
 namespace raintrace::render {
 namespace {
 
-std::string read_all(const std::filesystem::path& p) {
-  std::ifstream in{p};
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using output::image_is_complete;
+using output::read_manifest;
 
-struct Run {
-  int exit_code = 0;
-  std::string output;  // stdout and stderr together, as a log file (not a terminal) gets them
-};
-
-ProcessSpec raintrace_spec(const std::vector<std::string>& args, const std::filesystem::path& log) {
-  ProcessSpec spec;
-  spec.argv = {RAINTRACE_BINARY};
-  spec.argv.insert(spec.argv.end(), args.begin(), args.end());
-  spec.log_path = log;
-  return spec;
-}
-
-Run run_raintrace(const std::vector<std::string>& args, const std::filesystem::path& log) {
-  ChildProcess child{raintrace_spec(args, log)};
-  Run r;
-  r.exit_code = child.wait();
-  r.output = read_all(log);
-  return r;
-}
+using raintrace::clitest::raintrace_spec;
+using raintrace::clitest::read_all;
+using raintrace::clitest::Run;
+using raintrace::clitest::run_raintrace;
+using raintrace::clitest::write_scene;
 
 int rendered_in_manifest(const std::filesystem::path& dir) {
   try {
     int n = 0;
-    for (const auto& f : povgen::read_manifest(dir / "manifest.json").frames) {
-      n += f.status == "rendered" ? 1 : 0;
+    for (const auto& f : read_manifest(dir / "manifest.json").frames) {
+      n += f.image.status == output::FrameStatus::rendered ? 1 : 0;
     }
     return n;
   } catch (const std::exception&) {
@@ -59,12 +41,7 @@ int rendered_in_manifest(const std::filesystem::path& dir) {
   }
 }
 
-class PovrayRenderCli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    if (!find_program("povray")) GTEST_SKIP() << "POV-Ray not installed (apt-get install povray)";
-  }
-};
+class PovrayRenderCli : public testing::PovrayTest {};
 
 TEST_F(PovrayRenderCli, RendersAFolderPrintsPlainProgressLinesAndTheOutputs) {
   const auto dir = testing::fresh_test_dir("cli_ok");
@@ -123,10 +100,10 @@ using FinishedImages = std::map<int, std::filesystem::file_time_type>;
 /// each of those images must be complete.
 FinishedImages finished_images(const std::filesystem::path& out) {
   FinishedImages finished;
-  for (const auto& f : povgen::read_manifest(out / "manifest.json").frames) {
-    if (f.status != "rendered") continue;
-    finished[f.number] = std::filesystem::last_write_time(out / f.image);
-    EXPECT_TRUE(image_is_complete(out / f.image, 64, 36)) << f.image;
+  for (const auto& f : read_manifest(out / "manifest.json").frames) {
+    if (f.image.status != output::FrameStatus::rendered) continue;
+    finished[f.number] = std::filesystem::last_write_time(out / f.image.path);
+    EXPECT_TRUE(image_is_complete(out / f.image.path, 64, 36)) << f.image.path;
   }
   return finished;
 }
@@ -199,20 +176,6 @@ TEST_F(PovrayRenderCli, SigintStopsPovrayKeepsFramesAndSaysHowToResume) {
   EXPECT_GE(rendered_in_manifest(dir / "out"), 2);
 }
 
-// A small rain scene (about 1 000 drops in view at 64x36) for runs that export and render.
-std::filesystem::path write_scene(const std::filesystem::path& dir, int frames) {
-  std::filesystem::create_directories(dir);
-  const auto path = dir / "small.toml";
-  std::ofstream{path} << "seed = 7\n[output]\nframes = " << frames
-                      << "\nfps = 24\nwidth = 64\nheight = 36\nquality = \"preview\"\n"
-                         "[camera]\nposition = [0, 1.6, -5]\nlook_at = [0, 1.3, 0]\n"
-                         "fov_deg = 60\nexposure_s = 0.02\n"
-                         "[rain]\nrate_mm_per_h = 5\nnear_m = 0.3\nfar_m = 2.5\n"
-                         "[wind]\nvelocity_m_per_s = [0.8, 0, 0]\n"
-                         "[environment]\nname = \"night_street\"\n";
-  return path;
-}
-
 std::string frame_file(const std::filesystem::path& out, int frame) {
   return read_all(out / fmt::format("frames/frame_{:04d}.pov", frame));
 }
@@ -243,14 +206,14 @@ TEST_F(PovrayRenderCli, SceneFileIsExportedWhileRenderingIntoTheSameFilesAsAPlai
     EXPECT_TRUE(image_is_complete(dir / "a" / final_image_name(Pass::image, f), 64, 36)) << f;
   }
   EXPECT_EQ(read_all(dir / "a/scene.inc"), read_all(dir / "c/scene.inc"));
-  const auto manifest = povgen::read_manifest(dir / "a/manifest.json");
-  const auto exported = povgen::read_manifest(dir / "c/manifest.json");
+  const auto manifest = read_manifest(dir / "a/manifest.json");
+  const auto exported = read_manifest(dir / "c/manifest.json");
   ASSERT_EQ(manifest.frames.size(), 6U);
   ASSERT_EQ(exported.frames.size(), 6U);
   for (std::size_t i = 0; i < 6; ++i) {
-    EXPECT_EQ(manifest.frames[i].status, "rendered");
+    EXPECT_EQ(manifest.frames[i].image.status, output::FrameStatus::rendered);
     EXPECT_EQ(manifest.frames[i].input_hash, exported.frames[i].input_hash);
-    EXPECT_EQ(manifest.frames[i].rendered_hash, exported.frames[i].input_hash);
+    EXPECT_EQ(manifest.frames[i].image.rendered_hash, exported.frames[i].input_hash);
   }
   // The same command again: everything is up to date, nothing is ray-traced.
   const auto again = run_raintrace(

@@ -1,5 +1,5 @@
 // Only whole images at the right size count as finished.
-#include "render/image_check.h"
+#include "output/image_check.h"
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
@@ -7,9 +7,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "render/test_folder.h"
+#include "output/test_dir.h"
+#include "povgen/content_hash.h"
 
-namespace raintrace::render {
+namespace raintrace::output {
 namespace {
 
 TEST(ImageIsComplete, AcceptsWholeImageRejectsTruncatedWrongSizeAndMissing) {
@@ -39,5 +40,21 @@ TEST(ImageIsComplete, AcceptsWholeImageRejectsTruncatedWrongSizeAndMissing) {
   EXPECT_FALSE(image_is_complete(dir / "hole.png", 64, 36));
 }
 
+TEST(FileFacts, AreTheSizeAndContentHashOfTheBytes) {
+  const auto dir = testing::fresh_test_dir("facts");
+  EXPECT_FALSE(file_facts(dir / "missing.png"));
+  std::ofstream{dir / "a.bin", std::ios::binary} << "foobar";
+  const auto facts = file_facts(dir / "a.bin");
+  ASSERT_TRUE(facts);
+  EXPECT_EQ(facts->size, 6U);
+  EXPECT_EQ(facts->hash, povgen::content_hash("foobar"));
+  // Bigger than the read buffer: the same as hashing the whole at once.
+  const std::string big(200000, 'x');
+  std::ofstream{dir / "big.bin", std::ios::binary} << big;
+  EXPECT_EQ(file_facts(dir / "big.bin")->hash, povgen::content_hash(big));
+  std::ofstream{dir / "empty.bin", std::ios::binary};
+  EXPECT_EQ(file_facts(dir / "empty.bin")->size, 0U);
+}
+
 }  // namespace
-}  // namespace raintrace::render
+}  // namespace raintrace::output

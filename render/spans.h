@@ -1,28 +1,14 @@
-// Which frames of an output folder need ray-tracing, and how to cut them into POV-Ray runs.
-// Pure apart from checking which images exist, so the resume rules are easy to test.
+// How the frames a plan renders (output::FolderState::plan) are cut into POV-Ray runs, and how
+// many runs are in flight. Pure, so the cutting is easy to test.
 #pragma once
 
 #include <algorithm>
-#include <filesystem>
 #include <optional>
 #include <vector>
 
-#include "povgen/manifest.h"
 #include "render/povray_command.h"
 
 namespace raintrace::render {
-
-/// Whether one frame's image must be (re)made: force, or status not "rendered", or
-/// rendered_hash != input_hash (or no input_hash), or the image file is missing.
-bool frame_needs_render(const povgen::FrameEntry& frame, const std::filesystem::path& out_dir,
-                        bool force);
-
-/// Frames (ascending) whose image must be (re)made: force, or status not "rendered", or
-/// rendered_hash != input_hash, or the image file is missing. Frames outside `only` are left
-/// out when it is given.
-std::vector<int> frames_needing_render(const povgen::Manifest& manifest,
-                                       const std::filesystem::path& out_dir, bool force,
-                                       const std::optional<FrameSpan>& only);
 
 /// Cuts ascending frame numbers into contiguous spans. Each POV-Ray start costs ~0.7 s
 /// (POVRAY-NOTES), so spans are long, but short enough that `jobs` processes all get work and
@@ -59,10 +45,6 @@ class StreamingSpans {
   int m_last_arrived = 0;
   bool m_closed = false;
 };
-
-/// Digits of the frame number in the manifest's image names ("images/frame_00001.png" → 5);
-/// 4 when there are no frames.
-int frame_digits(const povgen::Manifest& manifest);
 
 /// Default number of POV-Ray processes in flight: cores/2 + 3 (4 on 2 cores). Parsing is
 /// single-threaded and each process also idles ~0.24 s per frame in POV-Ray's own polling

@@ -1,32 +1,10 @@
-// Resume rules and span cutting.
-#include "render/frame_plan.h"
+// Span cutting.
+#include "render/spans.h"
 
 #include <algorithm>
 #include <thread>
 
 namespace raintrace::render {
-
-bool frame_needs_render(const povgen::FrameEntry& f, const std::filesystem::path& out_dir,
-                        bool force) {
-  std::error_code ec;
-  const bool have_image = std::filesystem::is_regular_file(out_dir / f.image, ec);
-  const bool up_to_date =
-      f.status == "rendered" && !f.input_hash.empty() && f.rendered_hash == f.input_hash;
-  return force || !up_to_date || !have_image;
-}
-
-std::vector<int> frames_needing_render(const povgen::Manifest& manifest,
-                                       const std::filesystem::path& out_dir, bool force,
-                                       const std::optional<FrameSpan>& only) {
-  std::vector<int> frames;
-  for (const auto& f : manifest.frames) {
-    if (only && (f.number < only->first || f.number > only->last)) continue;
-    if (frame_needs_render(f, out_dir, force)) frames.push_back(f.number);
-  }
-  std::sort(frames.begin(), frames.end());
-  frames.erase(std::unique(frames.begin(), frames.end()), frames.end());
-  return frames;
-}
 
 std::vector<FrameSpan> split_into_spans(const std::vector<int>& frames, int jobs, int max_span) {
   std::vector<FrameSpan> spans;
@@ -80,15 +58,6 @@ std::optional<FrameSpan> StreamingSpans::take_ready() {
   if (span.count() < m_length && can_grow) return std::nullopt;
   m_pending.erase(m_pending.begin(), m_pending.begin() + static_cast<std::ptrdiff_t>(n));
   return span;
-}
-
-int frame_digits(const povgen::Manifest& manifest) {
-  if (manifest.frames.empty()) return 4;
-  const std::string& image = manifest.frames.front().image;
-  const auto end = image.rfind('.');
-  const auto start = image.find_last_not_of("0123456789", end == std::string::npos ? end : end - 1);
-  if (end == std::string::npos || start == std::string::npos || end - start - 1 == 0) return 4;
-  return static_cast<int>(end - start - 1);
 }
 
 int default_jobs() {

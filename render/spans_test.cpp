@@ -1,10 +1,7 @@
-// Resume rules and span cutting.
-#include "render/frame_plan.h"
+// Span cutting.
+#include "render/spans.h"
 
 #include <gtest/gtest.h>
-#include <fstream>
-
-#include "render/test_folder.h"
 
 namespace raintrace::render {
 namespace {
@@ -117,25 +114,6 @@ TEST(StreamingSpans, CoversEveryFrameThatNeedsARenderExactlyOnce) {
   drain();
   EXPECT_EQ(covered, expected);
   EXPECT_TRUE(plan.exhausted());
-}
-
-TEST(FramesNeedingRender, SkipsOnlyUpToDateFramesWhoseImageExists) {
-  const auto dir = testing::fresh_test_dir("plan");
-  testing::write_test_folder(dir, {.frames = 5});
-  auto manifest = povgen::read_manifest(dir / "manifest.json");
-  EXPECT_EQ(frames_needing_render(manifest, dir, false, std::nullopt), iota(1, 5));
-
-  std::filesystem::create_directories(dir / "images");
-  for (int f : {1, 2, 3, 4}) {
-    std::ofstream{dir / final_image_name(Pass::image, f)} << "x";
-    manifest.frames[f - 1].status = "rendered";
-    manifest.frames[f - 1].rendered_hash = manifest.frames[f - 1].input_hash;
-  }
-  manifest.frames[1].rendered_hash = "stale";  // frame 2's inputs changed since its render
-  std::filesystem::remove(dir / final_image_name(Pass::image, 3));  // frame 3's image is lost
-  EXPECT_EQ(frames_needing_render(manifest, dir, false, std::nullopt), (std::vector<int>{2, 3, 5}));
-  EXPECT_EQ(frames_needing_render(manifest, dir, false, FrameSpan{3, 4}), (std::vector<int>{3}));
-  EXPECT_EQ(frames_needing_render(manifest, dir, true, std::nullopt), iota(1, 5));
 }
 
 }  // namespace

@@ -1,12 +1,19 @@
 // Full decode (not just the header): a truncated PNG has a valid header but fails its IDAT/IEND.
-#include "render/image_check.h"
+#include "output/image_check.h"
 
 #include <OpenImageIO/imagebuf.h>
+#include <fcntl.h>
 #include <fmt/core.h>
+#include <unistd.h>
 #include <array>
+#include <cerrno>
 #include <fstream>
+#include <system_error>
+#include <vector>
 
-namespace raintrace::render {
+#include "povgen/content_hash.h"
+
+namespace raintrace::output {
 namespace {
 
 // A PNG ends with its IEND chunk: length 0, "IEND", CRC AE 42 60 82. Checking these 12 bytes
@@ -44,4 +51,32 @@ bool image_is_complete(const std::filesystem::path& path, int width, int height,
   return true;
 }
 
-}  // namespace raintrace::render
+std::optional<FileFacts> file_facts(const std::filesystem::path& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) {
+    if (errno == ENOENT || errno == ENOTDIR) return std::nullopt;
+    throw std::system_error(errno, std::generic_category(), "cannot read " + path.string());
+  }
+  FileFacts facts;
+  povgen::ContentHasher hasher;
+  std::vector<char> buffer(1 << 16);
+  for (;;) {
+    const ssize_t n = ::read(fd, buffer.data(), buffer.size());
+    if (n == 0) break;
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      const int error = errno;
+      ::close(fd);
+      // A folder where an image is expected (EISDIR) is just not the image.
+      if (error == EISDIR) return std::nullopt;
+      throw std::system_error(error, std::generic_category(), "cannot read " + path.string());
+    }
+    hasher.update({buffer.data(), static_cast<std::size_t>(n)});
+    facts.size += static_cast<std::uint64_t>(n);
+  }
+  ::close(fd);
+  facts.hash = hasher.hex();
+  return facts;
+}
+
+}  // namespace raintrace::output

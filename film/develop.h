@@ -1,0 +1,73 @@
+// Developing a frame: the rendered scene-linear HDR frame → the picture a camera would show.
+// The order follows the light: exposure, the lens (vignetting, then glare scattered inside it),
+// the film's response (Filmic via OpenColorIO), then grain in the developed picture.
+//
+//   linear ─exposure_ev─▶ ─vignette (cos⁴)─▶ ─bloom (energy-conserving)─▶ ─view + look─▶ ─grain─▶
+//   display sRGB ─8-bit─▶ PNG
+//
+// Usage:
+//   const film::DisplayTransform filmic;                   // once: loads Blender's config
+//   film::develop_file("images/frame_0016.exr", "images/frame_0016.png",
+//                      film::DevelopSettings{.exposure_ev = -1}, {.fov_deg = 60, .seed = 1,
+//                      .frame = 16}, filmic);
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "film/display_transform.h"
+#include "film/rgb_image.h"
+
+namespace raintrace::film {
+
+/// How the camera develops every frame of a clip (the scene file's `[camera]` look keys).
+struct DevelopSettings {
+  /// Exposure in stops, [−16, 16]; 0 = scene values as rendered (0.18 → display 0.5). Default 0.
+  double exposure_ev = 0.0;
+  /// Display view. Default filmic.
+  View view = View::filmic;
+  /// Filmic contrast look (filmic view only). Default medium_high_contrast: deeper shadows than
+  /// Filmic's base curve, which suits a night scene's mostly dark frame.
+  Look look = Look::medium_high_contrast;
+  /// Share of the light the lens scatters into glare, [0, 1] (see bloom.h). Default 0.04, in the
+  /// range of measured veiling glare of photographic lenses (ISO 9358's veiling glare index is
+  /// a few per cent): a soft halo around lamps far brighter than white, invisible elsewhere.
+  double bloom = 0.04;
+  /// Grain RMS on mid-grey of a 1920-pixel-wide frame, [0, 0.5] (see grain.h). Default 0.02
+  /// (5/255 on mid-grey at 1920 px, 1.7/255 at 640 px): fine, like a fast film stock scanned,
+  /// enough to take the computer-clean edge off flat areas. 0 turns it off.
+  double grain = 0.02;
+  /// Strength of the cos⁴ falloff, [0, 1] (see vignette.h). Default 0.5: corners 0.43 stops
+  /// darker at 60° and 16:9, a gentle darkening that holds the eye in the frame. 0 turns it off.
+  double vignette = 0.5;
+};
+
+/// What develop needs to know about the frame itself.
+struct FrameContext {
+  double fov_deg = 60.0;   ///< the camera's horizontal field of view, (0, 180), for vignetting
+  std::uint64_t seed = 1;  ///< the scene's seed, for grain
+  std::int64_t frame = 1;  ///< the frame number, for grain
+};
+
+/// Throws std::invalid_argument naming the field when a setting is out of its range, or when a
+/// look other than medium-contrast is combined with the standard view.
+void validate(const DevelopSettings& settings);
+
+/// One line recording the settings, e.g. "raintrace develop: exposure_ev=-1 view=filmic
+/// look=medium-high-contrast bloom=0.04 grain=0 vignette=0" (written into each PNG).
+std::string describe(const DevelopSettings& settings);
+
+/// Scene-linear frame → display-encoded sRGB in [0, 1], each step as its header says.
+/// Deterministic: the same input, settings and context give the same bits on any thread count.
+RgbImage develop(const RgbImage& linear, const DevelopSettings& settings, const FrameContext& frame,
+                 const DisplayTransform& display);
+
+/// Reads an HDR frame (read_rgb_image), develops it and writes an 8-bit sRGB PNG (write_png,
+/// atomically, with describe(settings) as its description). The input file is not touched.
+/// Throws std::runtime_error naming the file on I/O errors, std::invalid_argument for settings.
+void develop_file(const std::filesystem::path& hdr_in, const std::filesystem::path& png_out,
+                  const DevelopSettings& settings, const FrameContext& frame,
+                  const DisplayTransform& display);
+
+}  // namespace raintrace::film

@@ -1,0 +1,204 @@
+// develop(): the steps in the order of the light, settings checked by name, the PNG written
+// atomically from exactly what develop() returns, the HDR input left alone.
+#include "film/develop.h"
+
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imageio.h>
+#include <unistd.h>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "film/bloom.h"
+#include "film/exposure.h"
+#include "film/grain.h"
+#include "film/image_file.h"
+#include "film/vignette.h"
+
+namespace raintrace::film {
+namespace {
+
+namespace fs = std::filesystem;
+
+const DisplayTransform& filmic() {
+  static const DisplayTransform transform;
+  return transform;
+}
+
+/// Everything off: develop is exposure and the curve alone.
+DevelopSettings plain() {
+  return {.exposure_ev = 0.0,
+          .look = Look::medium_contrast,
+          .bloom = 0.0,
+          .grain = 0.0,
+          .vignette = 0.0};
+}
+
+RgbImage ramp(int w, int h) {
+  RgbImage image(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < 3; ++c)
+        image.at(x, y, c) = float(std::exp2(double(x) / 4.0 - 10.0 + 0.5 * c + 0.1 * y));
+  image.at(w / 2, h / 2, 0) = 500.0f;  // a lamp
+  return image;
+}
+
+TEST(Develop, MiddleGreyAtZeroStopsIsHalfAndEachStopOfExposureCountsTwice) {
+  RgbImage grey(4, 4, 0.18f), quarter(4, 4, 0.045f);
+  EXPECT_NEAR(develop(grey, plain(), {}, filmic()).at(1, 1, 0), 0.5, 0.001);
+  DevelopSettings two_stops = plain();
+  two_stops.exposure_ev = 2.0;
+  EXPECT_EQ(develop(quarter, two_stops, {}, filmic()).pixels,
+            develop(grey, plain(), {}, filmic()).pixels);
+}
+
+TEST(Develop, RunsTheStepsInTheOrderOfTheLight) {
+  const RgbImage linear = ramp(48, 20);
+  const DevelopSettings settings{.exposure_ev = -1.5,
+                                 .look = Look::high_contrast,
+                                 .bloom = 0.2,
+                                 .grain = 0.1,
+                                 .vignette = 0.7};
+  const FrameContext frame{.fov_deg = 70.0, .seed = 9, .frame = 4};
+  RgbImage by_hand = linear;
+  apply_exposure(by_hand, -1.5);
+  apply_vignette(by_hand, 0.7, 70.0);
+  by_hand = bloom(by_hand, 0.2);
+  by_hand = filmic().to_display(by_hand, View::filmic, Look::high_contrast);
+  apply_grain(by_hand, 0.1, 9, 4);
+  EXPECT_EQ(develop(linear, settings, frame, filmic()).pixels, by_hand.pixels);
+}
+
+TEST(Develop, ANanPixelStaysOneBlackPixel) {
+  RgbImage linear(32, 32, 0.18f);
+  linear.at(16, 16, 1) = std::numeric_limits<float>::quiet_NaN();
+  DevelopSettings settings = plain();
+  settings.bloom = 0.5;
+  const RgbImage out = develop(linear, settings, {}, filmic());
+  for (float v : out.pixels) ASSERT_FALSE(std::isnan(v));
+  EXPECT_LT(out.at(16, 16, 1), 0.5f);
+  EXPECT_NEAR(out.at(0, 0, 1), 0.5, 0.01);
+}
+
+TEST(Develop, ValidateNamesTheSettingOutOfRange) {
+  const auto message = [](DevelopSettings s) {
+    try {
+      validate(s);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
+  DevelopSettings s;
+  EXPECT_EQ(message(s), "(accepted)");
+  s.exposure_ev = 20;
+  EXPECT_NE(message(s).find("exposure_ev"), std::string::npos);
+  s = {};
+  s.bloom = -0.5;
+  EXPECT_NE(message(s).find("bloom"), std::string::npos);
+  s = {};
+  s.grain = 0.9;
+  EXPECT_NE(message(s).find("grain"), std::string::npos);
+  s = {};
+  s.vignette = 2;
+  EXPECT_NE(message(s).find("vignette"), std::string::npos);
+  s = {};
+  s.view = View::standard;
+  s.look = Look::low_contrast;
+  EXPECT_NE(message(s).find("low-contrast"), std::string::npos);
+}
+
+TEST(Develop, DescribeRecordsEverySetting) {
+  const DevelopSettings s{.exposure_ev = -1.5,
+                          .look = Look::low_contrast,
+                          .bloom = 0.04,
+                          .grain = 0.02,
+                          .vignette = 0.3};
+  EXPECT_EQ(describe(s),
+            "raintrace develop: exposure_ev=-1.5 view=filmic look=low-contrast bloom=0.04 "
+            "grain=0.02 vignette=0.3");
+}
+
+class DevelopFile : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir = fs::temp_directory_path() / ("raintrace_develop_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  void TearDown() override { fs::remove_all(dir); }
+
+  /// Writes `image` as a half-float EXR, as POV-Ray's +FE does.
+  fs::path write_exr(const RgbImage& image, const std::string& name) {
+    const fs::path path = dir / name;
+    auto out = OIIO::ImageOutput::create(path.string());
+    OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::HALF);
+    EXPECT_TRUE(out->open(path.string(), spec));
+    EXPECT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data()));
+    EXPECT_TRUE(out->close());
+    return path;
+  }
+
+  static std::string bytes_of(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    return bytes.str();
+  }
+
+  fs::path dir;
+};
+
+TEST_F(DevelopFile, PngHoldsDevelopsValuesRoundedTo8BitsAndTheExrIsUntouched) {
+  const fs::path exr = write_exr(ramp(40, 12), "frame_0007.exr");
+  const std::string exr_bytes = bytes_of(exr);
+  const DevelopSettings settings{.exposure_ev = 0.5, .bloom = 0.1, .grain = 0.05, .vignette = 0.5};
+  const FrameContext frame{.fov_deg = 60.0, .seed = 3, .frame = 7};
+  const fs::path png = dir / "frame_0007.png";
+  develop_file(exr, png, settings, frame, filmic());
+
+  const RgbImage expected = develop(read_rgb_image(exr), settings, frame, filmic());
+  auto in = OIIO::ImageInput::open(png.string());
+  ASSERT_TRUE(in);
+  EXPECT_EQ(in->spec().format, OIIO::TypeDesc::UINT8);
+  EXPECT_EQ(in->spec().nchannels, 3);
+  EXPECT_EQ(in->spec().get_string_attribute("ImageDescription"), describe(settings));
+  std::vector<std::uint8_t> bytes(expected.pixels.size());
+  ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, bytes.data()));
+  for (std::size_t i = 0; i < bytes.size(); ++i) {
+    ASSERT_EQ(int(bytes[i]), int(std::lround(expected.pixels[i] * 255.0f))) << "value " << i;
+  }
+  EXPECT_EQ(bytes_of(exr), exr_bytes);
+  // Only the two frames: no temporary file left behind.
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 2);
+}
+
+TEST_F(DevelopFile, SameFrameDevelopsToByteIdenticalPngs) {
+  // No time stamp in the file (unlike POV-Ray's own PNGs): frames can be compared by bytes.
+  const fs::path exr = write_exr(ramp(40, 12), "frame_0003.exr");
+  const FrameContext frame{.seed = 5, .frame = 3};
+  develop_file(exr, dir / "a.png", {}, frame, filmic());
+  develop_file(exr, dir / "b.png", {}, frame, filmic());
+  EXPECT_EQ(bytes_of(dir / "a.png"), bytes_of(dir / "b.png"));
+}
+
+TEST_F(DevelopFile, MissingInputIsAnErrorNamingTheFile) {
+  try {
+    develop_file(dir / "frame_0001.exr", dir / "frame_0001.png", {}, {}, filmic());
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("frame_0001.exr"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir / "frame_0001.png"));
+}
+
+}  // namespace
+}  // namespace raintrace::film

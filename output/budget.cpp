@@ -1,0 +1,144 @@
+// The run budget: sim::World::estimate for the drops, the measured memory model for the bytes.
+#include "output/budget.h"
+
+#include <fmt/core.h>
+#include <unistd.h>
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <vector>
+
+#include "sim/world.h"
+
+namespace raintrace::output {
+namespace {
+
+constexpr double kMiB = 1024.0 * 1024.0;
+constexpr double kGiB = 1024.0 * kMiB;
+
+// The measured model (budget.h), each term rounded up from what was measured.
+constexpr double kSimulationBase = 128 * kMiB;
+constexpr double kSimulationPerDrop = 150.0;
+constexpr double kPovrayBase = 24 * kMiB;
+constexpr double kPovrayPerPixel = 24.0;  // POV-Ray's image buffers
+constexpr double kPovrayPerViewDropLod = 160.0;
+constexpr double kPovrayPerViewDropAll = 600.0;
+/// The simulation's speed on the reference machine, for telling users how long a run is.
+constexpr double kDropStepsPerSecond = 1e8;
+
+// "42 million", "15 200", "2.3e16": counts for people.
+std::string human_count(double n) {
+  if (n < 1e4) return fmt::format("{:.0f}", n);
+  if (n < 1e6) return fmt::format("{:.0f} thousand", n / 1e3);
+  if (n < 1e9) return fmt::format("{:.3g} million", n / 1e6);
+  if (n < 1e12) return fmt::format("{:.3g} billion", n / 1e9);
+  const int exponent = static_cast<int>(std::floor(std::log10(n)));
+  return fmt::format("{:.2g}e{}", n / std::pow(10.0, exponent), exponent);
+}
+
+// A number as an option takes it, short: "6.4e9".
+std::string option_number(double n) {
+  if (n < 1e6) return fmt::format("{:.0f}", std::ceil(n));
+  const int exponent = static_cast<int>(std::floor(std::log10(n)));
+  return fmt::format("{:.2g}e{}", std::ceil(n / std::pow(10.0, exponent - 1)) / 10.0, exponent);
+}
+
+std::string human_duration(double seconds) {
+  if (seconds < 120) return fmt::format("{:.0f} s", seconds);
+  if (seconds < 7200) return fmt::format("{:.0f} minutes", seconds / 60);
+  if (seconds < 2 * 86400) return fmt::format("{:.0f} hours", seconds / 3600);
+  if (seconds < 2 * 365 * 86400) return fmt::format("{:.0f} days", seconds / 86400);
+  return fmt::format("{:.2g} years", seconds / (365 * 86400.0));
+}
+
+}  // namespace
+
+double default_max_memory_bytes() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES);
+  const long page = ::sysconf(_SC_PAGE_SIZE);
+  const double physical =
+      pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 8 * kGiB;
+  return std::min(4 * kGiB, physical / 2);
+}
+
+Budget estimate_budget(const SceneToExport& scene, FrameSpan range, int povray_processes) {
+  const sim::WorkEstimate work = sim::World::estimate(scene.sim);
+  Budget b;
+  b.drops = work.drops;
+  b.drops_in_view = work.drops_in_view;
+  b.substeps = work.steps_until((range.last - 1) / scene.look.fps, scene.sim.substep_s);
+  b.drop_steps = b.drops * b.substeps;
+  b.simulation_bytes = kSimulationBase + kSimulationPerDrop * b.drops;
+  // Far streaks below min_streak_coverage are thinned (povgen/export_params.h): the lower it
+  // is, the more are kept, up to all of them at 0.
+  const double coverage = scene.look.min_streak_coverage;
+  const double per_view_drop =
+      coverage <= 0.0
+          ? kPovrayPerViewDropAll
+          : std::min(kPovrayPerViewDropAll, kPovrayPerViewDropLod / std::min(coverage, 1.0));
+  b.povray_bytes = kPovrayBase + kPovrayPerPixel * scene.look.width * scene.look.height +
+                   per_view_drop * b.drops_in_view;
+  b.povray_processes = std::max(0, povray_processes);
+  return b;
+}
+
+void check_budget(const Budget& b, const BudgetLimits& limits) {
+  if (!(b.drop_steps <= limits.max_drop_steps)) {
+    throw BudgetExceeded(fmt::format(
+        "this scene asks for {} drop-steps of simulation ({} drops × {} substeps up to the "
+        "last frame), about {} at {} drop-steps/s, more than the limit of {}: raise "
+        "[simulation] substep_s or [output] fps, lower [output] frames (or --frames) or "
+        "[simulation] prewarm_s, or lower [rain] rate_mm_per_h or far_m; or raise the limit "
+        "with --max-drop-steps {}",
+        human_count(b.drop_steps), human_count(b.drops), human_count(b.substeps),
+        human_duration(b.drop_steps / kDropStepsPerSecond), human_count(kDropStepsPerSecond),
+        human_count(limits.max_drop_steps), option_number(b.drop_steps * 1.5)));
+  }
+  const double max_memory =
+      limits.max_memory_bytes > 0.0 ? limits.max_memory_bytes : default_max_memory_bytes();
+  if (!(b.total_bytes() <= max_memory)) {
+    const std::string povray =
+        b.povray_processes > 0
+            ? fmt::format(", POV-Ray {} × {} for {} drops in view", b.povray_processes,
+                          format_bytes(b.povray_bytes), human_count(b.drops_in_view))
+            : std::string{};
+    throw BudgetExceeded(fmt::format(
+        "this scene needs about {} of memory (simulation {} for {} drops{}), more than the "
+        "limit of {}: lower [rain] far_m or rate_mm_per_h{}, or raise the limit with "
+        "--max-memory {:.0f}G",
+        format_bytes(b.total_bytes()), format_bytes(b.simulation_bytes), human_count(b.drops),
+        povray, format_bytes(max_memory), b.povray_processes > 1 ? " (or --jobs)" : "",
+        std::ceil(b.total_bytes() * 1.25 / kGiB)));
+  }
+}
+
+std::optional<double> parse_byte_size(std::string_view text) {
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) {
+    text.remove_suffix(1);
+  }
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc{} || !(value > 0.0) || !std::isfinite(value)) return std::nullopt;
+  std::string unit{end, text.data() + text.size()};
+  std::transform(unit.begin(), unit.end(), unit.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  if (unit.size() >= 2 && unit.compare(unit.size() - 2, 2, "IB") == 0) {
+    unit.erase(unit.size() - 2);  // "GiB"
+  } else if (!unit.empty() && unit.back() == 'B') {
+    unit.pop_back();  // "GB", "B"
+  }
+  static const std::vector<std::pair<std::string, double>> kUnits{
+      {"", 1.0}, {"K", 1024.0}, {"M", kMiB}, {"G", kGiB}, {"T", 1024.0 * kGiB}};
+  for (const auto& [name, factor] : kUnits) {
+    if (unit == name) return value * factor;
+  }
+  return std::nullopt;
+}
+
+std::string format_bytes(double bytes) {
+  if (bytes >= kGiB) return fmt::format("{:.1f} GB", bytes / kGiB);
+  return fmt::format("{:.0f} MB", std::ceil(bytes / kMiB));
+}
+
+}  // namespace raintrace::output

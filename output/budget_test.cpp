@@ -1,0 +1,95 @@
+// The run budget: work and memory estimated before anything starts, and the messages that stop
+// a run asking for too much.
+#include "output/budget.h"
+
+#include <gtest/gtest.h>
+
+namespace raintrace::output {
+namespace {
+
+constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
+
+SceneToExport scene(double rate, double far_m) {
+  SceneToExport s;
+  s.sim.rain.rate_mm_per_h = rate;
+  s.sim.rain.far_m = far_m;
+  s.frames = 48;
+  return s;
+}
+
+std::string refusal(const Budget& b, const BudgetLimits& limits = {}) {
+  try {
+    check_budget(b, limits);
+  } catch (const BudgetExceeded& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Budget, TheIssuesHeavyRainIsRefusedBeforeItStartsNamingTheKeys) {
+  // rate_mm_per_h = 500, far_m = 25 passed the 50-million-drop check and then needed 4.8 GB
+  // for one frame.
+  const Budget b = estimate_budget(scene(500, 25), {1, 1}, 4);
+  EXPECT_GT(b.total_bytes(), 4.5 * kGiB);
+  const std::string why = refusal(b);
+  EXPECT_NE(why.find("this scene needs about"), std::string::npos) << why;
+  EXPECT_NE(why.find("lower [rain] far_m or rate_mm_per_h"), std::string::npos) << why;
+  EXPECT_NE(why.find("--max-memory"), std::string::npos) << why;
+  EXPECT_NE(why.find("(or --jobs)"), std::string::npos) << why;
+  // Raising the limit as the message says lets it run.
+  BudgetLimits more;
+  more.max_memory_bytes = 64 * kGiB;
+  EXPECT_EQ(refusal(b, more), "");
+}
+
+TEST(Budget, MemoryFollowsTheMeasuredModel) {
+  // 1.1 million simulated drops measured 266 MB at its peak (budget.h): the estimate may round
+  // up, never below.
+  const Budget b = estimate_budget(scene(500, 6), {1, 1}, 0);
+  EXPECT_NEAR(b.drops, 1.1e6, 0.1e6);
+  EXPECT_GE(b.simulation_bytes, 266.0 * 1024 * 1024);
+  EXPECT_LE(b.simulation_bytes, 1.3 * 266.0 * 1024 * 1024);
+  EXPECT_EQ(b.total_bytes(), b.simulation_bytes);  // export only: no POV-Ray
+  const Budget rendering = estimate_budget(scene(500, 6), {1, 1}, 4);
+  EXPECT_DOUBLE_EQ(rendering.total_bytes(), b.simulation_bytes + 4 * rendering.povray_bytes);
+}
+
+TEST(Budget, AFrameRateOfAlmostNothingIsRefusedForItsWork) {
+  SceneToExport s = scene(5, 12);
+  s.look.fps = 1e-9;  // frame 2 lies at 1e9 s: 5e11 substeps
+  const Budget b = estimate_budget(s, {1, 2}, 1);
+  EXPECT_GT(b.substeps, 4e11);
+  const std::string why = refusal(b);
+  EXPECT_NE(why.find("drop-steps of simulation"), std::string::npos) << why;
+  EXPECT_NE(why.find("raise [simulation] substep_s or [output] fps"), std::string::npos) << why;
+  EXPECT_NE(why.find("--max-drop-steps"), std::string::npos) << why;
+  EXPECT_NE(why.find("years"), std::string::npos) << why;
+  // Frame 1 alone needs only the prewarm.
+  EXPECT_EQ(refusal(estimate_budget(s, {1, 1}, 1)), "");
+}
+
+TEST(Budget, TheDefaultSceneFitsEasily) {
+  const Budget b = estimate_budget(scene(5, 12), {1, 48}, 4);
+  EXPECT_EQ(refusal(b), "");
+  EXPECT_LT(b.total_bytes(), 1.0 * kGiB);
+  EXPECT_LT(b.drop_steps, 1e10);
+}
+
+TEST(Budget, ByteSizesReadAsPeopleWriteThem) {
+  EXPECT_EQ(parse_byte_size("2000000"), 2000000.0);
+  EXPECT_EQ(parse_byte_size("512M"), 512.0 * 1024 * 1024);
+  EXPECT_EQ(parse_byte_size("1.5G"), 1.5 * kGiB);
+  EXPECT_EQ(parse_byte_size("8GB"), 8 * kGiB);
+  EXPECT_EQ(parse_byte_size("8gib"), 8 * kGiB);
+  EXPECT_EQ(parse_byte_size("300k"), 300.0 * 1024);
+  EXPECT_FALSE(parse_byte_size(""));
+  EXPECT_FALSE(parse_byte_size("G"));
+  EXPECT_FALSE(parse_byte_size("-1G"));
+  EXPECT_FALSE(parse_byte_size("0"));
+  EXPECT_FALSE(parse_byte_size("8 potatoes"));
+  EXPECT_EQ(format_bytes(1.5 * kGiB), "1.5 GB");
+  EXPECT_EQ(format_bytes(300.0 * 1024 * 1024), "300 MB");
+}
+
+}  // namespace
+}  // namespace raintrace::output

@@ -1,0 +1,260 @@
+// The folder's state owner: whose folder it is, the transitions, and the one up-to-date rule
+// with images checked by size and content hash. No POV-Ray: "images" here are files whose
+// bytes the tests choose (render/ and tests/ render real ones).
+#include "output/folder_state.h"
+
+#include <gtest/gtest.h>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "output/test_dir.h"
+
+namespace raintrace::output {
+namespace {
+
+namespace fs = std::filesystem;
+
+FolderIdentity identity(const std::string& scene = "scene-a", std::uint64_t seed = 1) {
+  FolderIdentity id;
+  id.scene_hash = scene;
+  id.seed = seed;
+  id.width = 64;
+  id.height = 36;
+  id.fps = 24;
+  return id;
+}
+
+void write(const fs::path& path, const std::string& bytes) {
+  fs::create_directories(path.parent_path());
+  std::ofstream{path, std::ios::binary} << bytes;
+}
+
+std::string read(const fs::path& path) {
+  std::ifstream in{path, std::ios::binary};
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// An export of `frames` frames as export_frames does it, with each frame's file written and
+// its "image" rendered (any bytes do: the state checks bytes, not pixels).
+void export_and_render(FolderState& folder, int frames, const std::string& shared = "shared") {
+  folder.begin_export(shared, {1, frames}, frames);
+  for (int n = 1; n <= frames; ++n) {
+    write(folder.dir() / frame_scene_name(Pass::image, n), "frame " + std::to_string(n));
+    folder.frame_exported(n, shared + "+" + std::to_string(n));
+  }
+  folder.save();
+  for (int n = 1; n <= frames; ++n) {
+    write(folder.dir() / final_image_name(Pass::image, n),
+          "image bytes of frame " + std::to_string(n));
+    folder.rendered(Pass::image, n, 0.5);
+  }
+}
+
+TEST(FolderClaim, ANewFolderIsCreatedAndMarkedAsRaintracesAtOnce) {
+  const auto dir = testing::fresh_test_dir("claim_new") / "a" / "b";
+  {
+    const auto folder = FolderState::claim(dir, identity(), false, "test");
+    EXPECT_TRUE(fs::exists(dir / kManifest));
+    EXPECT_EQ(folder.manifest().identity, identity());
+  }
+  // Claimed again with the same identity: resumed, nothing said.
+  ClaimNote note;
+  FolderState::claim(dir, identity(), false, "test", &note);
+  EXPECT_TRUE(note.text.empty());
+}
+
+TEST(FolderClaim, AFolderInUseIsRefusedAtOnce) {
+  const auto dir = testing::fresh_test_dir("claim_busy");
+  const auto first = FolderState::claim(dir, identity(), false, "raintrace render a.toml");
+  try {
+    FolderState::claim(dir, identity(), false, "raintrace render b.toml");
+    FAIL() << "two claims";
+  } catch (const FolderBusy& e) {
+    EXPECT_NE(std::string{e.what()}.find("raintrace render a.toml"), std::string::npos);
+  }
+  EXPECT_THROW(FolderState::open(dir, "raintrace render dir"), FolderBusy);
+}
+
+TEST(FolderClaim, ANonEmptyFolderRaintraceDidNotMakeIsRefusedUnlessForced) {
+  const auto dir = testing::fresh_test_dir("claim_foreign");
+  write(dir / "notes.txt", "mine");
+  write(dir / "images" / "frame_0001.png", "my own picture");
+  try {
+    FolderState::claim(dir, identity(), false, "test");
+    FAIL() << "a foreign folder was claimed";
+  } catch (const FolderRefused& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("raintrace did not make it"), std::string::npos) << what;
+    EXPECT_NE(what.find("--force"), std::string::npos) << what;
+  }
+  EXPECT_FALSE(fs::exists(dir / kManifest));
+  ClaimNote note;
+  { FolderState::claim(dir, identity(), true, "test", &note); }
+  EXPECT_NE(note.text.find("raintrace did not make"), std::string::npos) << note.text;
+  EXPECT_EQ(read(dir / "notes.txt"), "mine");  // forcing overwrites, it never cleans up
+  EXPECT_TRUE(fs::exists(dir / kManifest));
+}
+
+TEST(FolderClaim, AnotherToolsManifestIsNotOurs) {
+  const auto dir = testing::fresh_test_dir("claim_other_manifest");
+  write(dir / kManifest, R"({"name": "web-app"})");
+  EXPECT_THROW(FolderState::claim(dir, identity(), false, "test"), FolderRefused);
+  EXPECT_THROW(FolderState::open(dir, "test"), FolderRefused);
+  EXPECT_EQ(read(dir / kManifest), R"({"name": "web-app"})");
+}
+
+TEST(FolderClaim, AnotherSceneIsRefusedAndForceRemovesOnlyWhatTheManifestRecords) {
+  const auto dir = testing::fresh_test_dir("claim_other");
+  {
+    auto folder = FolderState::claim(dir, identity("scene-a"), false, "test");
+    export_and_render(folder, 3);
+  }
+  write(dir / kMovie, "movie");
+  write(dir / "images" / "my_notes.txt", "mine");
+  write(dir / "frames" / "frame_0009.pov", "not recorded");
+  try {
+    FolderState::claim(dir, identity("scene-b"), false, "test");
+    FAIL() << "another scene was let in";
+  } catch (const FolderRefused& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("holds 3 frames of another scene"), std::string::npos) << what;
+    EXPECT_NE(what.find("--force"), std::string::npos) << what;
+  }
+  EXPECT_TRUE(fs::exists(dir / final_image_name(Pass::image, 2)));  // refused: nothing touched
+
+  ClaimNote note;
+  const auto folder = FolderState::claim(dir, identity("scene-b"), true, "test", &note);
+  EXPECT_NE(note.text.find("replaced 3 frames of another scene"), std::string::npos) << note.text;
+  EXPECT_TRUE(folder.manifest().frames.empty());
+  for (int n = 1; n <= 3; ++n) {
+    EXPECT_FALSE(fs::exists(dir / final_image_name(Pass::image, n))) << n;
+    EXPECT_FALSE(fs::exists(dir / frame_scene_name(Pass::image, n))) << n;
+  }
+  EXPECT_FALSE(fs::exists(dir / kMovie));
+  EXPECT_EQ(read(dir / "images" / "my_notes.txt"), "mine");
+  EXPECT_EQ(read(dir / "frames" / "frame_0009.pov"), "not recorded");
+}
+
+TEST(FolderClaim, OtherSettingsOfTheSameSceneAreRefusedSayingWhich) {
+  const auto dir = testing::fresh_test_dir("claim_settings");
+  { FolderState::claim(dir, identity("scene-a", 1), false, "test"); }
+  auto bigger = identity("scene-a", 7);
+  bigger.width = 320;
+  bigger.masks = true;
+  try {
+    FolderState::claim(dir, bigger, false, "test");
+    FAIL();
+  } catch (const FolderRefused& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("this scene with other settings"), std::string::npos) << what;
+    EXPECT_NE(what.find("seed 1 there, 7 here"), std::string::npos) << what;
+    EXPECT_NE(what.find("size 64x36 there, 320x36 here"), std::string::npos) << what;
+    EXPECT_NE(what.find("masks off there, on here"), std::string::npos) << what;
+  }
+}
+
+TEST(FolderClaim, AShorterSceneRemovesTheFramesItNoLongerHas) {
+  const auto dir = testing::fresh_test_dir("claim_shorter");
+  auto folder = FolderState::claim(dir, identity(), false, "test");
+  export_and_render(folder, 5);
+  write(dir / "images" / "frame_0005.png.keep", "mine");
+  folder.begin_export("shared", {1, 3}, 3);
+  EXPECT_EQ(folder.manifest().frames.size(), 3U);
+  for (int n : {4, 5}) {
+    EXPECT_FALSE(fs::exists(dir / final_image_name(Pass::image, n))) << n;
+    EXPECT_FALSE(fs::exists(dir / frame_scene_name(Pass::image, n))) << n;
+  }
+  EXPECT_TRUE(fs::exists(dir / final_image_name(Pass::image, 3)));
+  EXPECT_EQ(read(dir / "images" / "frame_0005.png.keep"), "mine");
+}
+
+TEST(UpToDateRule, ARenderedImageIsUpToDateOnlyWhileItsBytesAreTheRecordedOnes) {
+  const auto dir = testing::fresh_test_dir("rule_bytes");
+  auto folder = FolderState::claim(dir, identity(), false, "test");
+  export_and_render(folder, 5);
+  for (int n = 1; n <= 5; ++n)
+    EXPECT_EQ(folder.decide(Pass::image, n, false), RenderReason::up_to_date);
+  const auto image = [&](int n) { return dir / final_image_name(Pass::image, n); };
+  fs::remove(image(1));
+  fs::resize_file(image(2), 5);  // truncated
+  fs::resize_file(image(3), 0);  // 0 bytes
+  std::string bytes = read(image(4));
+  bytes[3] ^= 1;  // same size, other bytes
+  write(image(4), bytes);
+  EXPECT_EQ(folder.decide(Pass::image, 1, false), RenderReason::file_missing);
+  EXPECT_EQ(folder.decide(Pass::image, 2, false), RenderReason::file_truncated);
+  EXPECT_EQ(folder.decide(Pass::image, 3, false), RenderReason::file_empty);
+  EXPECT_EQ(folder.decide(Pass::image, 4, false), RenderReason::file_changed);
+  EXPECT_EQ(folder.decide(Pass::image, 5, false), RenderReason::up_to_date);
+  EXPECT_EQ(folder.decide(Pass::image, 5, true), RenderReason::forced);
+  EXPECT_EQ(folder.verified_frames(), std::vector<int>{5});
+  const auto plan = folder.plan({});
+  EXPECT_EQ(plan.images, (std::vector<int>{1, 2, 3, 4}));
+  EXPECT_EQ(plan.up_to_date, 1);
+  EXPECT_EQ(plan.summary(),
+            "4 to render: 1 image missing, 1 image empty, 1 image truncated, 1 image changed; 1 "
+            "frames up to date");
+  // A reopened folder (the next run) sees the same.
+  const Manifest saved = folder.manifest();
+  EXPECT_EQ(read_manifest(dir / kManifest).frames.at(4).image.file_hash,
+            saved.frames.at(4).image.file_hash);
+}
+
+TEST(UpToDateRule, TransitionsGiveTheirReasons) {
+  const auto dir = testing::fresh_test_dir("rule_transitions");
+  auto folder = FolderState::claim(dir, identity(), false, "test");
+  export_and_render(folder, 4);
+  folder.frame_exported(1, "other inputs");
+  folder.rendering(Pass::image, {2, 2});
+  folder.failed(Pass::image, 3, "File 'x' line 1: Parse Error");
+  EXPECT_EQ(folder.decide(Pass::image, 1, false), RenderReason::inputs_changed);
+  EXPECT_EQ(folder.decide(Pass::image, 2, false), RenderReason::interrupted);
+  EXPECT_EQ(folder.decide(Pass::image, 3, false), RenderReason::failed_before);
+  EXPECT_EQ(folder.decide(Pass::image, 4, false), RenderReason::up_to_date);
+  EXPECT_EQ(folder.decide(Pass::image, 9, false), RenderReason::not_exported);
+  EXPECT_EQ(folder.decide(Pass::mask, 4, false), RenderReason::not_exported);  // no masks
+  // The same inputs exported again: still up to date.
+  folder.frame_exported(4, "shared+4");
+  EXPECT_EQ(folder.decide(Pass::image, 4, false), RenderReason::up_to_date);
+  // While an export rewrites a frame it vouches for nothing.
+  folder.begin_export("shared", {4, 4}, 4);
+  EXPECT_EQ(folder.decide(Pass::image, 4, false), RenderReason::not_exported);
+  folder.frame_exported(4, "shared+4");
+  EXPECT_EQ(folder.decide(Pass::image, 4, false), RenderReason::up_to_date);
+  const auto m = read_manifest(dir / kManifest);
+  EXPECT_EQ(m.frames[2].image.status, FrameStatus::failed);
+  EXPECT_EQ(m.frames[2].image.error, "File 'x' line 1: Parse Error");
+}
+
+TEST(UpToDateRule, ChangedSharedFilesLeaveTheFramesOutsideTheRangeUnexported) {
+  const auto dir = testing::fresh_test_dir("rule_shared");
+  auto folder = FolderState::claim(dir, identity(), false, "test");
+  export_and_render(folder, 4);
+  folder.begin_export("shared v2", {1, 2}, 4);
+  folder.frame_exported(1, "shared v2+1");
+  folder.frame_exported(2, "shared v2+2");
+  EXPECT_EQ(folder.decide(Pass::image, 1, false), RenderReason::inputs_changed);
+  EXPECT_EQ(folder.decide(Pass::image, 3, false), RenderReason::not_exported);
+  const auto plan = folder.plan({});
+  EXPECT_EQ(plan.images, (std::vector<int>{1, 2}));
+  EXPECT_NE(plan.summary().find("2 not exported"), std::string::npos) << plan.summary();
+  EXPECT_TRUE(folder.verified_frames().empty());
+}
+
+TEST(Assembly, TheKeyChangesWithTheFramesAndTheirBytes) {
+  const auto dir = testing::fresh_test_dir("assembly_key");
+  auto folder = FolderState::claim(dir, identity(), false, "test");
+  export_and_render(folder, 3);
+  const std::string all = assembly_key(folder, {1, 2, 3});
+  EXPECT_EQ(assembly_key(folder, {1, 2, 3}), all);
+  EXPECT_NE(assembly_key(folder, {1, 2}), all);
+  write(dir / final_image_name(Pass::image, 2), "another picture");
+  folder.rendered(Pass::image, 2, 0.1);
+  EXPECT_NE(assembly_key(folder, {1, 2, 3}), all);
+}
+
+}  // namespace
+}  // namespace raintrace::output

@@ -1,0 +1,18 @@
+// File names of the output folder.
+#include "output/layout.h"
+
+#include <fmt/core.h>
+
+namespace raintrace::output {
+
+const char* pass_prefix(Pass pass) { return pass == Pass::image ? "frame" : "mask"; }
+
+std::string final_image_name(Pass pass, int frame, int digits) {
+  return fmt::format("{}/{}_{:0{}d}.png", kImagesDir, pass_prefix(pass), frame, digits);
+}
+
+std::string frame_scene_name(Pass pass, int frame, int digits) {
+  return fmt::format("{}/{}_{:0{}d}.pov", kFramesDir, pass_prefix(pass), frame, digits);
+}
+
+}  // namespace raintrace::output
