@@ -252,7 +252,9 @@ void build_frame_values(const sim::Frame& frame, const ExportParams& look, Frame
       const auto g = static_cast<std::size_t>(std::max(s.generation, 0));
       if (values.bolts.size() < first + g + 1)
         values.bolts.resize(first + g + 1, BoltValue{{}, 0.0f});
-      values.bolts[first + g].segments.push_back({s.start, s.end, s.radius});
+      const float depth = std::max(std::min(view.depth(s.start), view.depth(s.end)), 1e-3f);
+      const float core = std::max(s.radius, 0.5f * view.pixel_size(depth, look.width));
+      values.bolts[first + g].segments.push_back({s.start, s.end, s.radius, core});
     }
     for (std::size_t g = 0; first + g < values.bolts.size(); ++g) {
       const float b = g == 0 ? bolt.brightness

@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace raintrace {
 namespace {
 
@@ -56,19 +58,24 @@ std::string read_text(const fs::path& path) {
   return text.str();
 }
 
+// A fresh folder for `raintrace export` (which refuses a non-empty folder it did not make),
+// unique to this process: sessions may share the temporary directory.
 fs::path work_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "raintrace_example_figures_test" / name;
+  const fs::path dir = fs::temp_directory_path() / ("raintrace_example_figures_test_" +
+                                                    std::to_string(::getpid())) /
+                       name;
   fs::remove_all(dir);
-  fs::create_directories(dir);
+  fs::create_directories(dir.parent_path());
   return dir;
 }
 
-// `raintrace export EXAMPLE -o DIR --frames RANGE`.
+// `raintrace export EXAMPLE -o DIR --frames RANGE`; its log beside DIR.
 void export_example(const std::string& example, const fs::path& dir, const std::string& frames) {
+  const fs::path log = dir.string() + ".export.log";
   const std::string command = std::string{RAINTRACE_EXE} + " export '" + RAINTRACE_SOURCE_DIR +
                               "/examples/" + example + ".toml' -o '" + dir.string() +
-                              "' --frames " + frames + " >'" + dir.string() + "/export.log' 2>&1";
-  ASSERT_EQ(std::system(command.c_str()), 0) << read_text(dir / "export.log");
+                              "' --frames " + frames + " >'" + log.string() + "' 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0) << read_text(log);
 }
 
 // Renders one scene file of the folder (path relative to it) into images/NAME.png, 16:9 like
@@ -121,7 +128,7 @@ TEST(ExampleFigures, ThunderstormClipShowsTheLightningChannel) {
   }
   EXPECT_GE(frames_with_bolts, 4) << "the forced strike's flash should last several frames";
   EXPECT_GE(tallest, 0.2) << "no frame shows a lightning channel across a fifth of the picture";
-  fs::remove_all(dir);
+  fs::remove_all(dir.parent_path());
 }
 
 // closeup: the test card rendered with the drops and without them (RT_HeroDrops=0). The drops'
@@ -198,7 +205,7 @@ TEST(ExampleFigures, CloseupDropFillsTheFrameAndTurnsTheSceneUpsideDown) {
   // Through the drop: blue above, warm below.
   EXPECT_LT(inside_upper, -0.25) << "the drop's upper part should show the card's lower half";
   EXPECT_GT(inside_lower, 0.25) << "the drop's lower part should show the card's upper half";
-  fs::remove_all(dir);
+  fs::remove_all(dir.parent_path());
 }
 
 }  // namespace
