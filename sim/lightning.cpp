@@ -125,14 +125,20 @@ BoltSkeleton build_bolt(const LightningParams& params, const Camera& camera, dou
       const int parent_index = parent_begin + c % parent_count;
       const BoltBranch& parent = bolt.branches[parent_index];
       const auto& segs = parent.segments;
-      const auto at = static_cast<std::size_t>(
-          std::min<double>(static_cast<double>(segs.size()) - 1.0,
-                           rng.next() * 0.7 * static_cast<double>(segs.size())));
+      double length = 0.0;
+      for (const auto& s : segs) length += glm::length(glm::dvec3(s.end) - glm::dvec3(s.start));
+      // A branch leaves its parent somewhere along the upper 70 % of the parent's length (by
+      // length, not by step: the trunk's steps shrink toward the ground, and picking a step
+      // would put most branches near the ground, where real ones are fewest).
+      const double leave = rng.next() * 0.7 * length;
+      std::size_t at = 0;
+      for (double run = 0.0; at + 1 < segs.size(); ++at) {
+        run += glm::length(glm::dvec3(segs[at].end) - glm::dvec3(segs[at].start));
+        if (run >= leave) break;
+      }
       const glm::dvec3 start(segs[at].start);
       const glm::dvec3 pdir =
           glm::normalize(glm::dvec3(segs.back().end) - glm::dvec3(segs.front().start));
-      double length = 0.0;
-      for (const auto& s : segs) length += glm::length(glm::dvec3(s.end) - glm::dvec3(s.start));
       const glm::dvec3 side = glm::normalize(glm::dvec3{rng.symmetric(), 0.0, rng.symmetric()} +
                                              glm::dvec3{1e-3, 0.0, 0.0});
       const glm::dvec3 bdir = glm::normalize(pdir + (0.6 + 0.6 * rng.next()) * side);
