@@ -158,6 +158,7 @@ Scene load_scene_string(std::string_view toml_text, const std::string& source_na
 
   scene.sim.camera.aspect = static_cast<double>(scene.look.width) / scene.look.height;
   scene.look.camera = scene.sim.camera;
+  scene.look.rain = scene.sim.rain;
   return scene;
 }
 

@@ -44,10 +44,14 @@ Examples:
   raintrace simulate examples/default.toml --threads 1         # same numbers, one thread
 
 Frames before the range are simulated too (the state depends on them) but not counted.
-JSON: frames, dt_s, drops {count, mean_diameter_mm, number_density_per_m3},
-rain_rate_mm_per_h {configured, measured_at_ground}, fall_speed_by_diameter
-[{diameter_mm, speed_m_per_s, samples}], horizontal_velocity_m_per_s [x, z], splashes,
-lightning {strikes, segments}, plus scene, seed, frame_range, time_s.
+JSON (every field explained in docs/statistics.md): frames, dt_s,
+drops {count, mean_diameter_mm, number_density_per_m3},
+rain_rate_mm_per_h {configured, measured_at_ground}, fall_speed_by_diameter (0.1 mm bins)
+[{diameter_min_mm, diameter_max_mm, mean_diameter_mm, speed_m_per_s, speed_sd_m_per_s,
+samples}], horizontal_velocity_m_per_s [x, z], horizontal_motion_by_frame
+[{time_s, drop_velocity_m_per_s [x, z], drop_velocity_sd_m_per_s [x, z],
+wind_m_per_s [x, z]}], splashes,
+lightning {strikes, segments}, plus scene, seed, frame_range, time_s, raintrace_version.
 Exit codes: 0 done, 2 bad scene file or option.)";
 
 /// Progress on stderr: a self-updating line on a terminal, a plain line every few seconds
@@ -95,9 +99,21 @@ nlohmann::json statistics_json(const sim::Statistics& stats, const Scene& scene,
   nlohmann::json bins = nlohmann::json::array();
   for (const sim::SpeedBin& bin : stats.fall_speed) {
     if (bin.samples == 0) continue;  // empty bins carry no measurement
-    bins.push_back({{"diameter_mm", bin.diameter_mm},
+    bins.push_back({{"diameter_min_mm", bin.diameter_min_mm},
+                    {"diameter_max_mm", bin.diameter_max_mm},
+                    {"mean_diameter_mm", bin.mean_diameter_mm},
                     {"speed_m_per_s", bin.speed_m_per_s},
+                    {"speed_sd_m_per_s", bin.speed_sd_m_per_s},
                     {"samples", bin.samples}});
+  }
+  nlohmann::json motion = nlohmann::json::array();
+  for (const sim::FrameMotion& m : stats.motion) {
+    motion.push_back(
+        {{"time_s", m.time_s},
+         {"drop_velocity_m_per_s", {m.drop_velocity_m_per_s[0], m.drop_velocity_m_per_s[1]}},
+         {"drop_velocity_sd_m_per_s",
+          {m.drop_velocity_sd_m_per_s[0], m.drop_velocity_sd_m_per_s[1]}},
+         {"wind_m_per_s", {m.wind_m_per_s[0], m.wind_m_per_s[1]}}});
   }
   return {
       {"frames", stats.frames},
@@ -112,6 +128,7 @@ nlohmann::json statistics_json(const sim::Statistics& stats, const Scene& scene,
       {"fall_speed_by_diameter", bins},
       {"horizontal_velocity_m_per_s",
        {stats.mean_horizontal_velocity_m_per_s[0], stats.mean_horizontal_velocity_m_per_s[1]}},
+      {"horizontal_motion_by_frame", motion},
       {"splashes", stats.splashes},
       {"lightning", {{"strikes", stats.lightning_strikes}, {"segments", stats.lightning_segments}}},
       {"scene", scene.source.string()},

@@ -11,6 +11,7 @@
 
 #include "sim/camera.h"
 #include "sim/param_table.h"
+#include "sim/params.h"
 
 namespace raintrace::povgen {
 
@@ -71,12 +72,22 @@ enum class Quality {
 /// Scene-file names of Quality, in the order of its values.
 inline constexpr std::string_view kQualityNames[] = {"preview", "final"};
 
+/// min_streak_coverage when a scene does not set it: the preview's and the final look's.
+inline constexpr double kPreviewStreakCoverage = 0.01;
+inline constexpr double kFinalStreakCoverage = 0.003;
+
 struct ExportParams {
   sim::Camera camera;
   /// Diameter of the lens opening; 0 is a pinhole: everything sharp. Otherwise the camera
   /// focuses on camera.look_at and blurs the rest (POV-Ray focal blur): a point at distance d,
   /// the focus at f, spreads over a disc of aperture_m·|d − f|/d at the plane of focus.
   double aperture_m = 0.0;
+  /// The rain as simulated (cli/ copies it from the scene, like the camera): its drop sizes and
+  /// rate give the rain medium beyond rain.far_m (rain_medium_text()).
+  sim::RainParams rain;
+  /// Continue the rain beyond rain.far_m as a participating medium whose extinction and
+  /// scattering follow from the drops (docs/rain-appearance.md).
+  bool rain_medium = true;
   /// Image size.
   int width = 640;
   int height = 360;
@@ -85,16 +96,17 @@ struct ExportParams {
   Quality quality = Quality::preview;
   /// Drops nearer than this are refractive spheres, farther ones streak quads.
   double sphere_distance_m = 3.0;
-  /// Level of detail for far rain, as a share of one pixel. A streak's coverage is
-  /// the share of a pixel's light its drop would block: opacity × drop width / pixel width
-  /// (× length / pixel when shorter than a pixel). A streak below this coverage adds a barely
-  /// measurable tint to its pixels yet costs POV-Ray a ray hit per pixel it crosses, so it is
-  /// kept with probability coverage / min_streak_coverage (keyed by the drop's id: the same
-  /// drops stay from frame to frame) and drawn at min_streak_coverage: the expected light of
-  /// the far field is unchanged, carried by fewer, brighter streaks. 0 keeps every streak.
-  /// The default, 1, thins every streak fainter than a full pixel (the heavy-rain example
-  /// halves its streaks against 0.5 and its mean brightness moves by under 0.3/255).
-  double min_streak_coverage = 1.0;
+  /// Level of detail for streaks. A streak's coverage is the share of its pixels' light its
+  /// drop replaces: the share of the exposure the drop spends on each point of the streak (its
+  /// size / its travel, Garg & Nayar 2006) × its width / a pixel when narrower. A streak below
+  /// this coverage adds a barely measurable tint to its pixels yet costs POV-Ray a ray hit per
+  /// pixel it crosses, so it is kept with probability coverage / min_streak_coverage (keyed by
+  /// the drop's id: the same drops stay from frame to frame) and drawn at min_streak_coverage:
+  /// the expected light is unchanged, carried by fewer, brighter streaks. 0 keeps every streak
+  /// (the atlas's floor, ~1.6e-4, is always applied the same way). Not set (−1): 0.003 at
+  /// quality final — the picture keeps the fine veil of every streak at 45 % of its cost — and
+  /// 0.01 at preview, a grainier veil at 20 % (docs/rain-appearance.md compares them).
+  double min_streak_coverage = -1.0;
   /// Level of detail for splashes: the share of splash droplets written. Each
   /// droplet is kept or dropped by a key made of what stays constant over its flight (its
   /// horizontal velocity and size), so a droplet never blinks in and out; the survivors are
@@ -129,11 +141,13 @@ inline constexpr sim::Param<ExportParams> kExportParams[] = {
     sim::choice<&ExportParams::quality>("output", "quality", kQualityNames),
     sim::number("export", "sphere_distance_m", &ExportParams::sphere_distance_m, "m",
                 sim::Range::closed(0, 1000)),
-    sim::number("export", "min_streak_coverage", &ExportParams::min_streak_coverage,
-                "share of a pixel", sim::Range::closed(0, 1)),
+    sim::number("export", "min_streak_coverage", &ExportParams::min_streak_coverage, "coverage",
+                sim::Range::closed(0, 1))
+        .unset_as("automatic"),
     sim::number("export", "splash_keep", &ExportParams::splash_keep, "share",
                 sim::Range::open_closed(0, 1)),
     sim::flag("export", "environment_plate", &ExportParams::environment_plate),
+    sim::flag("export", "rain_medium", &ExportParams::rain_medium),
     sim::flag("export", "mask", &ExportParams::mask),
     sim::number("lightning", "light", &ExportParams::lightning_light, "",
                 sim::Range::closed(0, 100)),

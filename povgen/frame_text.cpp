@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cstring>
 #include <functional>
 #include <memory>
@@ -229,17 +230,42 @@ void write_face_pairs(Writer& w, std::uint64_t quad) {
   w.put(">,\n");
 }
 
-/// The uv_indices line of each atlas cell: the same few dozen bytes for every streak in that
+/// The atlas cells a frame's streaks use, in cell order, and each cell's place among them:
+/// only those cells get uv_vectors (the atlas has ~1 500 cells, a frame uses a few dozen).
+struct UsedCells {
+  std::vector<int> cells;          ///< used cell numbers, ascending
+  std::vector<std::int32_t> slot;  ///< per atlas cell: its index in `cells`, or −1
+};
+
+UsedCells used_cells(const std::vector<StreakValue>& streaks, const StreakAtlasLayout& atlas) {
+  UsedCells used;
+  used.slot.assign(static_cast<std::size_t>(std::max(atlas.cells(), 0)), -1);
+  for (const StreakValue& s : streaks) {
+    const auto cell = static_cast<std::size_t>(s.cell);
+    if (s.cell < 0 || cell >= used.slot.size()) {
+      throw std::invalid_argument("write_frame_text: a streak's atlas cell is not in the atlas");
+    }
+    used.slot[cell] = 0;
+  }
+  for (std::size_t cell = 0; cell < used.slot.size(); ++cell) {
+    if (used.slot[cell] < 0) continue;
+    used.slot[cell] = static_cast<std::int32_t>(used.cells.size());
+    used.cells.push_back(static_cast<int>(cell));
+  }
+  return used;
+}
+
+/// The uv_indices line of each used cell: the same few dozen bytes for every streak in that
 /// cell, so they are written once per frame and copied.
-std::vector<std::string> uv_index_lines(int cells) {
-  std::vector<std::string> lines(static_cast<std::size_t>(std::max(cells, 0)));
-  for (std::size_t cell = 0; cell < lines.size(); ++cell) {
+std::vector<std::string> uv_index_lines(std::size_t cells) {
+  std::vector<std::string> lines(cells);
+  for (std::size_t slot = 0; slot < lines.size(); ++slot) {
     Buffer buffer;
     {
       Writer w(buffer, 6 * kNumberSpace + 16);
-      write_triangle_pairs(w, 4 * cell);
+      write_triangle_pairs(w, 4 * slot);
     }
-    lines[cell] = buffer.view();
+    lines[slot] = buffer.view();
   }
   return lines;
 }
@@ -248,6 +274,7 @@ void write_streak_mesh(Emitter& out, const std::vector<StreakValue>& streaks,
                        const StreakAtlasLayout& atlas) {
   if (streaks.empty()) return;
   const std::size_t n = streaks.size();
+  const UsedCells used = used_cells(streaks, atlas);
   out.text("mesh2{\nvertex_vectors{");
   out.index(4 * n);
   out.text(",\n");
@@ -255,17 +282,16 @@ void write_streak_mesh(Emitter& out, const std::vector<StreakValue>& streaks,
     Writer w(buffer, (e - b) * (12 * kNumberSpace + 16));
     for (std::size_t i = b; i < e; ++i) write_corners(w, streaks[i].corners);
   });
-  // One uv quad per atlas cell, inset by half a texel so filtering never reads a neighbour.
-  // Corners 0, 1 (trailing end) take the cell's top, 2, 3 (leading end) its bottom.
-  const int cells = atlas.cells();
+  // One uv quad per used atlas cell, inset by half a texel so filtering never reads a
+  // neighbour. Corners 0, 1 (trailing end) take the cell's top, 2, 3 (leading end) its bottom.
   out.text("}\nuv_vectors{");
-  out.index(4 * static_cast<std::size_t>(cells));
+  out.index(4 * used.cells.size());
   out.text(",\n");
   const double width = atlas.width();
   const double height = atlas.height();
-  for (int cell = 0; cell < cells; ++cell) {
-    const int row = cell / atlas.shapes;
-    const int column = cell % atlas.shapes;
+  for (const int cell : used.cells) {
+    const int row = cell / atlas.columns();
+    const int column = cell % atlas.columns();
     const double u0 = (column * atlas.cell_width + 0.5) / width;
     const double u1 = ((column + 1) * atlas.cell_width - 0.5) / width;
     const double v0 = (row * atlas.cell_height + 0.5) / height;
@@ -287,18 +313,15 @@ void write_streak_mesh(Emitter& out, const std::vector<StreakValue>& streaks,
     Writer w(buffer, (e - b) * (6 * kNumberSpace + 16));
     for (std::size_t i = b; i < e; ++i) write_face_pairs(w, i);
   });
-  const std::vector<std::string> uv_lines = uv_index_lines(cells);
+  const std::vector<std::string> uv_lines = uv_index_lines(used.cells.size());
   out.text("}\nuv_indices{");
   out.index(2 * n);
   out.text(",\n");
   out.chunks(n, [&](std::size_t b, std::size_t e, Buffer& buffer) {
     Writer w(buffer, (e - b) * (6 * kNumberSpace + 16));
     for (std::size_t i = b; i < e; ++i) {
-      const auto cell = static_cast<std::size_t>(streaks[i].cell);
-      if (cell >= uv_lines.size()) {
-        throw std::invalid_argument("write_frame_text: a streak's atlas cell is not in the atlas");
-      }
-      w.put(uv_lines[cell]);
+      w.put(
+          uv_lines[static_cast<std::size_t>(used.slot[static_cast<std::size_t>(streaks[i].cell)])]);
     }
   });
   out.text("}\ntexture{RT_StreakTexture}\nno_shadow hollow\n}\n");

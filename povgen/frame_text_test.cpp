@@ -12,8 +12,8 @@
 namespace raintrace::povgen {
 namespace {
 
-/// One cell of 16×64 texels: uv quad inset by half a texel: u 0.5/16 … 15.5/16,
-/// v 0.5/64 … 63.5/64.
+/// One motion and one opacity level: two cells (resolved, sub-pixel) of 16×64 texels side by
+/// side. Cell 0's uv quad, inset by half a texel: u 0.5/32 … 15.5/32, v 0.5/64 … 63.5/64.
 StreakAtlasLayout one_cell() { return StreakAtlasLayout{1, 1, 16, 64}; }
 
 TEST(FrameText, GoldenTinyFrame) {
@@ -48,7 +48,7 @@ TEST(FrameText, GoldenTinyFrame) {
       "<0,2,4>,<0.5,2,4>,<0.5,1,4>,<0,1,4>,\n"
       "}\n"
       "uv_vectors{4,\n"
-      "<0.03125,0.9921875>,<0.96875,0.9921875>,<0.96875,0.0078125>,<0.03125,0.0078125>,\n"
+      "<0.015625,0.9921875>,<0.484375,0.9921875>,<0.484375,0.0078125>,<0.015625,0.0078125>,\n"
       "}\n"
       "face_indices{2,\n"
       "<0,1,2>,<0,2,3>,\n"
@@ -102,26 +102,29 @@ TEST(FrameText, FrameWithABoltSaysSoBeforeTheSceneInclude) {
   EXPECT_EQ(frame_text(values).find("RT_Bolts"), std::string::npos);
 }
 
-TEST(FrameText, SecondStreakUsesItsCellsUvQuad) {
-  // Cell 5 of the default 8×8 atlas: uv indices 20..23.
+TEST(FrameText, OnlyUsedCellsGetUvQuadsInCellOrder) {
+  // Cells 5 and 0 of the default atlas: uv_vectors only for those two, cell 0 first (uv
+  // indices 0..3), cell 5 second (4..7).
   FrameValues values;
   StreakValue s;
   s.corners = {glm::vec3{0.0f}, glm::vec3{1.0f, 0.0f, 0.0f}, glm::vec3{1.0f, 1.0f, 0.0f},
                glm::vec3{0.0f, 1.0f, 0.0f}};
-  s.cell = 0;
-  values.streaks.push_back(s);
   s.cell = 5;
+  values.streaks.push_back(s);
+  s.cell = 0;
   values.streaks.push_back(s);
   const std::string text = frame_text(values);
   EXPECT_NE(text.find("face_indices{4,\n<0,1,2>,<0,2,3>,\n<4,5,6>,<4,6,7>,\n}"), std::string::npos);
-  EXPECT_NE(text.find("uv_indices{4,\n<0,1,2>,<0,2,3>,\n<20,21,22>,<20,22,23>,\n}"),
-            std::string::npos);
-  EXPECT_NE(text.find("uv_vectors{256,"), std::string::npos);
+  EXPECT_NE(text.find("uv_indices{4,\n<4,5,6>,<4,6,7>,\n<0,1,2>,<0,2,3>,\n}"), std::string::npos);
+  EXPECT_NE(text.find("uv_vectors{8,"), std::string::npos);
+  // Cell 5 is column 5 of row 0: u from (5·8 + 0.5)/128 = 0.31640625, written to 7 digits.
+  EXPECT_NE(text.find("<0.3164063,"), std::string::npos);
 }
 
 TEST(FrameText, FaceAndUvIndicesCountUpAcrossDigitCarries) {
   // 3000 quads: vertex indices up to 11999, through every digit count and every carry
-  // (4i + 2 rolls over when 4i ends in 8); cells cycle through the default 64.
+  // (4i + 2 rolls over when 4i ends in 8); cells cycle through the first 64 of the atlas, all
+  // used, so each keeps its own place.
   FrameValues values;
   std::string faces = "face_indices{6000,\n";
   std::string uvs = "uv_indices{6000,\n";
@@ -147,7 +150,7 @@ TEST(FrameText, StreakCellOutsideTheAtlasIsRefused) {
   FrameValues values;
   StreakValue s;
   s.corners = {glm::vec3{0.0f}, glm::vec3{1.0f}, glm::vec3{2.0f}, glm::vec3{3.0f}};
-  s.cell = 1;
+  s.cell = 2;
   values.streaks.push_back(s);
   EXPECT_THROW(frame_text(values, one_cell()), std::invalid_argument);
 }

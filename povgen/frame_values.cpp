@@ -11,6 +11,7 @@
 #include "povgen/ordered_chunks.h"
 #include "povgen/view_frustum.h"
 #include "sim/lightning.h"
+#include "sim/streak.h"
 
 namespace raintrace::povgen {
 namespace {
@@ -47,30 +48,45 @@ float droplet_unit(const glm::vec3& velocity, float diameter) {
   return id_unit(key);
 }
 
-/// Builds the quad of one far drop; false when it is culled or too faint to see.
+/// Builds the quad of one far drop; false when it is culled or thinned out. `weight` is the
+/// drop's opacity (vanishing), a level-of-detail weight that may exceed 1.
+///
+/// Radiometry (Garg & Nayar 2006, sim/streak.h): the drop covers each point of its streak for
+/// its size over its speed, so the streak's opacity in the middle is min(1, size / travel) and
+/// the light it adds is the drop's whatever the exposure. The material gives the drop's
+/// radiance (templates/raintrace_materials.inc); this decides only where and how opaque.
 bool make_streak(const StreakContext& ctx, std::uint64_t id, const glm::vec3& position,
                  const glm::vec3& velocity, const glm::vec3& acceleration, float diameter,
-                 float opacity, StreakValue& out) {
-  const float radius = 0.5f * diameter;
+                 float weight, StreakValue& out) {
   const float speed = glm::length(velocity);
   // A drop at rest (or slower than 1 mm/s) still falls along -y for the quad's orientation.
   const glm::vec3 axis = speed > 1e-3f ? velocity / speed : glm::vec3{0.0f, -1.0f, 0.0f};
-  float length = static_cast<float>(
-      streak_length(speed, glm::dot(acceleration, axis), ctx.exposure_s, radius));
-  glm::vec3 start = position - axis * radius;
+  // The drop's outline seen from the side: an ellipse of equal volume flattened along its
+  // motion (Beard & Chuang), 2a across and 2b along.
+  const auto ratio = static_cast<float>(drop_axis_ratio(diameter));
+  const float across = diameter / std::cbrt(ratio);
+  const float along = across * ratio;
+  const auto travel =
+      static_cast<float>(sim::streak_travel(speed, glm::dot(acceleration, axis), ctx.exposure_s));
+  float length = travel + along;
+  glm::vec3 start = position - axis * (0.5f * along);
   glm::vec3 end = start + axis * length;
-  if (!ctx.view.segment_visible(start, end, radius)) return false;
+  if (!ctx.view.segment_visible(start, end, 0.5f * across)) return false;
 
   const glm::vec3 middle = 0.5f * (start + end);
   const float depth = std::max(ctx.view.depth(middle), 1e-3f);
   const float pixel = ctx.view.pixel_size(depth, ctx.width_px);
-  // Keep the drop's light when it is thinner or shorter than a pixel: widen, fade to match.
-  float width = diameter;
-  float alpha = std::clamp(opacity, 0.0f, 1.0f);
+  float alpha = static_cast<float>(sim::streak_opacity(travel, along));
+  // A drop narrower than a pixel covers only part of the pixels it crosses: draw it a pixel
+  // wide at that share (the sub-pixel cells are flat across), not as a wider streak.
+  float width = across;
+  StreakFootprint footprint = StreakFootprint::resolved;
   if (width < pixel) {
     alpha *= width / pixel;
     width = pixel;
+    footprint = StreakFootprint::sub_pixel;
   }
+  // Shorter than a pixel (a still drop far away): a pixel long, fainter by the same share.
   if (length < pixel) {
     alpha *= length / pixel;
     const glm::vec3 half = axis * (0.5f * pixel);
@@ -78,15 +94,15 @@ bool make_streak(const StreakContext& ctx, std::uint64_t id, const glm::vec3& po
     end = middle + half;
     length = pixel;
   }
+  alpha = std::min(alpha * std::max(weight, 0.0f), 1.0f);
   // Level of detail: a streak fainter than min_coverage survives with probability
-  // alpha / min_coverage and is drawn at min_coverage, so the far field's expected light stays
-  // the same while POV-Ray traces a fraction of the quads (each costs a ray hit per pixel).
+  // alpha / min_coverage and is drawn at min_coverage, so the expected light stays the same
+  // while POV-Ray traces a fraction of the quads (each costs a ray hit per pixel it crosses).
   if (alpha < ctx.min_coverage) {
     if (id_unit(id) * ctx.min_coverage >= alpha) return false;
     alpha = ctx.min_coverage;
   }
-  const double ratio = drop_axis_ratio(diameter);
-  out.cell = streak_atlas_cell(ctx.atlas, ratio, alpha);
+  out.cell = streak_atlas_cell(ctx.atlas, travel / along, footprint, alpha);
   if (out.cell < 0) return false;
 
   // Face the camera while staying on the motion axis: side ⟂ axis and ⟂ line of sight.
@@ -117,21 +133,37 @@ void add_drops(const DropContext& ctx, std::size_t begin, std::size_t end,
     const float diameter = drops.diameter[i];
     const float opacity = has_opacity ? drops.opacity[i] : 1.0f;
     if (!(opacity > 0.0f) || !(diameter > 0.0f)) continue;
-    // Near drops are refractive spheres, but only once they cover a pixel: a sub-pixel sphere
-    // is hit by a ray or missed entirely, which speckles the image, and a drop that small
-    // shows as its motion streak anyway.
+    const glm::vec3 acceleration = has_acceleration ? drops.acceleration[i] : glm::vec3{0.0f};
+    // Near drops are ray-traced refractive spheres while the camera can see them as drops: at
+    // least a pixel across (a sub-pixel sphere is hit by a ray or missed entirely, which
+    // speckles the image) and moving less than their own height during the exposure. POV-Ray
+    // has no motion blur: a drop that moves further is drawn as its streak, whose radiance is
+    // the blurred average of what the drop refracts plus the lights it scatters — what its
+    // refraction becomes when spread over more than its size (docs/rain-appearance.md).
     if (glm::length(p - view.eye()) < ctx.split &&
         diameter >= view.pixel_size(std::max(view.depth(p), 1e-3f), ctx.streaks.width_px)) {
       const float radius = 0.5f * diameter;
-      if (!view.sphere_visible(p, radius)) continue;
       const auto ratio = static_cast<float>(drop_axis_ratio(diameter));
       // Equal volume: the horizontal radius grows as the drop flattens, a = R·ratio^(-1/3).
       const float equatorial = radius / std::cbrt(ratio);
-      spheres.push_back({p, equatorial, ratio < kRoundEnough ? ratio : 1.0f});
-      continue;
+      const float height = 2.0f * equatorial * ratio;
+      const glm::vec3& v = drops.velocity[i];
+      const float speed = glm::length(v);
+      const glm::vec3 axis = speed > 1e-3f ? v / speed : glm::vec3{0.0f, -1.0f, 0.0f};
+      const auto travel = static_cast<float>(
+          sim::streak_travel(speed, glm::dot(acceleration, axis), ctx.streaks.exposure_s));
+      if (travel < height) {
+        // Swept over its path: centred on it, its height stretched by the travel (the motion is
+        // nearly vertical; exposure_s = 0 keeps the drop exactly as it is).
+        const glm::vec3 centre = p + axis * (0.5f * travel);
+        if (!view.sphere_visible(centre, radius + travel)) continue;
+        const float stretched = ratio * (1.0f + travel / height);
+        const bool round = std::fabs(stretched - 1.0f) < 1.0f - kRoundEnough;
+        spheres.push_back({centre, equatorial, round ? 1.0f : stretched});
+        continue;
+      }
     }
     StreakValue streak;
-    const glm::vec3 acceleration = has_acceleration ? drops.acceleration[i] : glm::vec3{0.0f};
     const std::uint64_t id = i < drops.id.size() ? drops.id[i] : i;
     if (make_streak(ctx.streaks, id, p, drops.velocity[i], acceleration, diameter, opacity,
                     streak)) {
@@ -198,6 +230,13 @@ glm::vec3 default_flash_position(const ViewFrustum& view) {
 
 }  // namespace
 
+double streak_coverage_threshold(const ExportParams& look) {
+  if (look.min_streak_coverage < 0.0) {
+    return look.quality == Quality::preview ? kPreviewStreakCoverage : kFinalStreakCoverage;
+  }
+  return std::min(look.min_streak_coverage, 1.0);
+}
+
 FrameValues build_frame_values(const sim::Frame& frame, const ExportParams& look,
                                const StreakAtlasLayout& atlas, int threads) {
   FrameValues values;
@@ -213,8 +252,12 @@ void build_frame_values(const sim::Frame& frame, const ExportParams& look, Frame
   values.splashes.clear();
   values.bolts.clear();
 
+  // The faintest atlas row is the floor of the level of detail: fainter streaks are thinned to
+  // it rather than dropped, so no light is lost whatever min_streak_coverage says.
+  const double min_coverage =
+      std::max(streak_coverage_threshold(look), streak_atlas_faintest_coverage(atlas));
   const StreakContext ctx{view, atlas, static_cast<float>(look.camera.exposure_s), look.width,
-                          static_cast<float>(std::clamp(look.min_streak_coverage, 0.0, 1.0))};
+                          static_cast<float>(min_coverage)};
   const DropContext drops{ctx, frame.drops, static_cast<float>(look.sphere_distance_m)};
   add_drops_in_chunks(drops, values, threads);
 

@@ -1,6 +1,6 @@
 // Part (a) of scene generation: a simulated frame → the exact values the POV-Ray text will
-// hold. Pure; culls to the view frustum, splits near drops (refractive spheres) from far ones
-// (streak quads) and builds each streak's camera-facing quad.
+// hold. Pure; culls to the view frustum, splits near, still drops (refractive spheres) from
+// moving or far ones (streak quads) and builds each streak's camera-facing quad and atlas cell.
 #pragma once
 
 #include <array>
@@ -54,12 +54,17 @@ struct FrameValues {
   glm::vec3 flash_position{0.0f};  ///< where the lightning light sits
 };
 
+/// look.min_streak_coverage, or when it is not set (< 0) kPreviewStreakCoverage at preview and
+/// kFinalStreakCoverage at final.
+double streak_coverage_threshold(const ExportParams& look);
+
 /// Builds the values of one frame. Drops nearer than look.sphere_distance_m that are at least
-/// one pixel across become spheres, all others streaks. Drops and droplets wholly outside the
-/// view are dropped;
-/// a streak narrower (or shorter) than one pixel is widened to a pixel and made fainter by the
-/// same factor, so distant rain keeps its light without antialiasing. Streaks fainter than
-/// look.min_streak_coverage are thinned out by drop id and the survivors drawn at that
+/// one pixel across and move less than their own height during the exposure become spheres
+/// (stretched over their path), all others streaks whose opacity is the share of the exposure
+/// the drop covers each point (sim/streak.h). Drops and droplets wholly outside the view are
+/// dropped; a streak narrower (or shorter) than one pixel is drawn a pixel wide and fainter by
+/// the same factor (its coverage of the pixel). Streaks fainter than
+/// streak_coverage_threshold() are thinned out by drop id and the survivors drawn at that
 /// coverage (same expected light, fewer quads). Throws
 /// std::invalid_argument if the camera is degenerate or a value is not finite.
 /// `threads` > 1 builds chunks of drops in parallel; the values are identical for every

@@ -60,6 +60,8 @@ TEST(FrameValues, DropsOutsideTheViewAreNotWritten) {
   ExportParams look = default_look();
   look.width = 8192;
   look.height = 4608;
+  look.min_streak_coverage = 0.0;
+  look.camera.exposure_s = 0.0;  // sharp: near drops stay drops
   const FrameValues values = build_frame_values(frame, look);
   EXPECT_EQ(values.streaks.size(), 1u);
   ASSERT_EQ(values.drops.size(), 1u);
@@ -74,6 +76,8 @@ TEST(FrameValues, NearFarSplitFollowsSphereDistance) {
   add_drop(frame, {0.0f, 1.6f, -1.9f}, {0.0f, -9.0f, 0.0f}, 6e-3f);
   ExportParams look = default_look();
   look.sphere_distance_m = 3.0;
+  look.min_streak_coverage = 0.0;
+  look.camera.exposure_s = 0.0;
   FrameValues values = build_frame_values(frame, look);
   EXPECT_EQ(values.drops.size(), 1u);
   EXPECT_EQ(values.streaks.size(), 1u);
@@ -90,6 +94,7 @@ TEST(FrameValues, LargeNearDropsAreFlattenedAtEqualVolume) {
   ExportParams look = default_look();  // a pixel at 1 m: 2·tan30°/8192 = 0.14 mm
   look.width = 8192;
   look.height = 4608;
+  look.camera.exposure_s = 0.0;
   const FrameValues values = build_frame_values(frame, look);
   ASSERT_EQ(values.drops.size(), 2u);
   const SphereValue& big = values.drops[0];
@@ -99,6 +104,41 @@ TEST(FrameValues, LargeNearDropsAreFlattenedAtEqualVolume) {
   EXPECT_NEAR(a * a * a * big.axis_ratio, 2.5e-3 * 2.5e-3 * 2.5e-3, 1e-12);
   // 0.5 mm drops are round to 0.1 % and written as bare spheres.
   EXPECT_EQ(values.drops[1].axis_ratio, 1.0f);
+}
+
+TEST(FrameValues, NearDropsShowTheirMotionDuringTheExposure) {
+  // A 4 mm drop 1 m from the eye at 1920 px (a pixel 0.6 mm): Beard-Chuang axis ratio 0.77932,
+  // 2a = 4.34666 mm, height 2b = 3.38742 mm.
+  sim::Frame frame;
+  add_drop(frame, {0.0f, 1.6f, -4.0f}, {0.0f, -8.8f, 0.0f}, 4e-3f);
+  ExportParams look = default_look();
+  look.width = 1920;
+  look.height = 1080;
+  look.min_streak_coverage = 0.0;
+  // exposure_s = 0: the drop as it is, a sharp refractive sphere.
+  look.camera.exposure_s = 0.0;
+  FrameValues values = build_frame_values(frame, look);
+  ASSERT_EQ(values.drops.size(), 1u);
+  EXPECT_NEAR(values.drops[0].axis_ratio, 0.77932, 1e-4);
+  EXPECT_FLOAT_EQ(values.drops[0].centre.y, 1.6f);
+  // 0.2 ms: it moves 1.76 mm, half its height — swept over its path: centred half-way down,
+  // stretched to (3.38742 + 1.76)/3.38742 of its height.
+  look.camera.exposure_s = 0.0002;
+  values = build_frame_values(frame, look);
+  ASSERT_EQ(values.drops.size(), 1u);
+  EXPECT_NEAR(values.drops[0].centre.y, 1.6f - 0.00088f, 1e-6);
+  EXPECT_NEAR(values.drops[0].axis_ratio, 0.77932 * (1.0 + 1.76 / 3.38742), 1e-4);
+  // 20 ms: 17.6 cm, 51 heights: a streak that long, no sphere.
+  look.camera.exposure_s = 0.02;
+  values = build_frame_values(frame, look);
+  EXPECT_TRUE(values.drops.empty());
+  ASSERT_EQ(values.streaks.size(), 1u);
+  const auto& c = values.streaks[0].corners;
+  EXPECT_NEAR(glm::length(c[3] - c[0]), 0.176 + 0.00338742, 1e-5);
+  // Wider than a pixel: the resolved columns, drawn the drop's own width.
+  const StreakAtlasLayout atlas;
+  EXPECT_LT(values.streaks[0].cell % atlas.columns(), atlas.motions);
+  EXPECT_NEAR(glm::length(c[1] - c[0]), 0.00434666, 1e-6);
 }
 
 TEST(FrameValues, SubPixelNearDropsBecomeStreaks) {
@@ -113,9 +153,10 @@ TEST(FrameValues, SubPixelNearDropsBecomeStreaks) {
 }
 
 TEST(FrameValues, StreakLengthFollowsExposureAndFacesTheCamera) {
-  // A 2 mm drop falling at 9 m/s, 10 m in front of the eye, exposure 0.02 s:
-  // L = 9·0.02 + 0 + 2·0.001 = 0.182 m. One pixel at depth 10 m is 2·10·tan30°/640 = 0.018042 m,
-  // wider than the drop, so the quad is one pixel wide.
+  // A 2 mm drop falling at 9 m/s, 10 m in front of the eye, exposure 0.02 s. Beard-Chuang
+  // flattens it to axis ratio 0.92759: 2a = 2 mm / 0.92759^(1/3) = 2.05074 mm across and
+  // 2b = 1.90225 mm along. L = 9·0.02 + 2b = 0.181902 m. One pixel at depth 10 m is
+  // 2·10·tan30°/640 = 18.0422 mm, wider than the drop, so the quad is one pixel wide.
   sim::Frame frame;
   add_drop(frame, {0.0f, 1.6f, 5.0f}, {0.0f, -9.0f, 0.0f}, 2e-3f);
   ExportParams look = default_look();
@@ -125,16 +166,42 @@ TEST(FrameValues, StreakLengthFollowsExposureAndFacesTheCamera) {
   const auto& c = values.streaks[0].corners;
   const glm::vec3 along = c[3] - c[0];
   const glm::vec3 across = c[1] - c[0];
-  EXPECT_NEAR(glm::length(along), 0.182, 1e-5);
+  EXPECT_NEAR(glm::length(along), 0.181902, 1e-5);
   EXPECT_NEAR(glm::length(across), 0.0180422, 1e-5);
-  // Along the fall (−y), starting R above the drop; across ⟂ both the fall and the view (x).
-  EXPECT_NEAR(c[0].y + c[1].y, 2.0f * (1.6f + 0.001f), 1e-5);
+  // Along the fall (−y), starting b above the drop; across ⟂ both the fall and the view (x).
+  EXPECT_NEAR(c[0].y + c[1].y, 2.0f * (1.6f + 0.000951f), 1e-5);
   EXPECT_NEAR(glm::dot(glm::normalize(along), glm::vec3{0, -1, 0}), 1.0, 1e-6);
   EXPECT_NEAR(std::fabs(glm::normalize(across).x), 1.0, 1e-6);
-  // Opacity: 2 mm spread over 18.04 mm → 0.1108, log2 → 3.17 → row 3 of the atlas; the 2 mm
-  // drop's axis ratio 0.9276 → flatness 0.145 → column round(0.145·7) = 1.
+  // Opacity (Garg & Nayar): each point is covered 2b / travel = 1.90225/180 = 0.0105681 of the
+  // exposure, and the drop fills 2.05074/18.0422 = 0.113664 of the pixel: 0.00120121. It moves
+  // 94.6 of its sizes (column 7, the longest) and is narrower than a pixel (the sub-pixel
+  // columns, + 8); the row is the nearest 2^(−r/8) to that coverage times the column's gain.
   const StreakAtlasLayout atlas;
-  EXPECT_EQ(values.streaks[0].cell, 3 * atlas.shapes + 1);
+  const int column = 7 + atlas.motions;
+  const auto row = static_cast<int>(
+      std::lround(-8.0 * std::log2(0.00120121 * streak_atlas_column_gain(atlas, column))));
+  EXPECT_EQ(values.streaks[0].cell, row * atlas.columns() + column);
+}
+
+TEST(FrameValues, TheStreaksLightDoesNotDependOnTheExposure) {
+  // The quad's area times its middle opacity is the drop's coverage of the picture: the same
+  // at 0.01 and 0.04 s (the length grows as the opacity falls), up to the atlas rows' 4.4 %.
+  sim::Frame frame;
+  add_drop(frame, {0.0f, 1.6f, 5.0f}, {0.0f, -9.0f, 0.0f}, 2e-3f);
+  ExportParams look = default_look();
+  look.min_streak_coverage = 0.0;
+  const StreakAtlasLayout atlas;
+  auto light = [&](double exposure) {
+    look.camera.exposure_s = exposure;
+    const FrameValues v = build_frame_values(frame, look);
+    EXPECT_EQ(v.streaks.size(), 1u);
+    const auto& c = v.streaks[0].corners;
+    const double area = glm::length(c[3] - c[0]) * glm::length(c[1] - c[0]);
+    return area * atlas.row_opacity(v.streaks[0].cell / atlas.columns());
+  };
+  const double short_exposure = light(0.01);
+  const double long_exposure = light(0.04);
+  EXPECT_NEAR(long_exposure / short_exposure, 1.0, 0.09);
 }
 
 TEST(FrameValues, SlantedStreaksFollowTheVelocity) {
@@ -149,8 +216,9 @@ TEST(FrameValues, SlantedStreaksFollowTheVelocity) {
   const auto& c = values.streaks[0].corners;
   const glm::vec3 along = glm::normalize(c[3] - c[0]);
   EXPECT_NEAR(glm::dot(along, glm::normalize(v)), 1.0, 1e-5);
-  // Length: |v|·t + 2R = 8.5440·0.02 + 0.003 = 0.173880 m.
-  EXPECT_NEAR(glm::length(c[3] - c[0]), 0.17388, 1e-4);
+  // Length: |v|·t + 2b = 8.5440·0.02 + 2.7043 mm = 0.173584 m (3 mm: axis ratio 0.85582,
+  // 2a = 3.1598 mm, 2b = 2.7043 mm).
+  EXPECT_NEAR(glm::length(c[3] - c[0]), 0.173584, 2e-5);
   // The side is perpendicular to the motion and to the line of sight (camera-facing).
   const glm::vec3 side = glm::normalize(c[1] - c[0]);
   const glm::vec3 middle = 0.25f * (c[0] + c[1] + c[2] + c[3]);
@@ -159,18 +227,11 @@ TEST(FrameValues, SlantedStreaksFollowTheVelocity) {
   EXPECT_NEAR(glm::dot(side, sight), 0.0, 1e-5);
 }
 
-TEST(FrameValues, FaintAndVanishedDropsAreSkipped) {
+TEST(FrameValues, VanishedDropsAreSkipped) {
   sim::Frame frame;
   add_drop(frame, {0.0f, 1.6f, 5.0f}, {0.0f, -9.0f, 0.0f}, 2e-3f);
   frame.drops.opacity[0] = 0.0f;
   EXPECT_TRUE(build_frame_values(frame, default_look()).streaks.empty());
-  // 0.05 mm drop at 10 m: 0.05/18.04 = 0.00277 coverage, −log2 = 8.5 → row 8: past the
-  // faintest row (7), nothing visible is lost.
-  frame.drops.opacity[0] = 1.0f;
-  frame.drops.diameter[0] = 5e-5f;
-  ExportParams look = default_look();
-  look.min_streak_coverage = 0.0;
-  EXPECT_TRUE(build_frame_values(frame, look).streaks.empty());
 }
 
 /// 4000 drops of 1 mm at depth 10 m, spread across the view (ids 0..3999).
@@ -185,21 +246,56 @@ sim::Frame faint_rain() {
 }
 
 TEST(FrameValues, FaintStreaksAreThinnedButKeepTheirExpectedLight) {
-  // A pixel at depth 10 m is 18.042 mm (640 px), so a 1 mm streak covers 0.05543 of it.
-  // Under min_streak_coverage 0.25 each survives with probability 0.05543 / 0.25 = 0.2217
-  // and is drawn at 0.25 (row log2(4) = 2): 4000 · 0.2217 = 887 expected, binomial σ ≈ 26.
+  // A 1 mm drop (2a = 1.00587 mm, 2b = 0.98837 mm) at 9 m/s, 10 m away: covered 0.98837/180 of
+  // the exposure over 1.00587/18.0422 of a pixel's width: 3.0612e-4. Under
+  // min_streak_coverage 0.01 each survives with probability 0.030612 and is drawn at 0.01:
+  // 4000 · 0.030612 = 122 expected, binomial σ ≈ 11.
   const sim::Frame frame = faint_rain();
   ExportParams look = default_look();
-  look.min_streak_coverage = 0.25;
+  look.min_streak_coverage = 0.01;
   const FrameValues thinned = build_frame_values(frame, look);
-  EXPECT_NEAR(static_cast<double>(thinned.streaks.size()), 887.0, 100.0);
+  EXPECT_NEAR(static_cast<double>(thinned.streaks.size()), 122.0, 40.0);
   const StreakAtlasLayout atlas;
-  for (const StreakValue& s : thinned.streaks) EXPECT_EQ(s.cell / atlas.shapes, 2);
-  // 0 keeps every streak at its own opacity: row round(log2(1 / 0.05543)) = round(4.17) = 4.
+  const double gain = streak_atlas_column_gain(atlas, atlas.columns() - 1);
+  auto row_of = [&](double coverage) {
+    return static_cast<int>(std::lround(-8.0 * std::log2(coverage * gain)));
+  };
+  for (const StreakValue& s : thinned.streaks) EXPECT_EQ(s.cell / atlas.columns(), row_of(0.01));
+  // 0 keeps every streak at its own opacity.
   look.min_streak_coverage = 0.0;
   const FrameValues all = build_frame_values(frame, look);
   ASSERT_EQ(all.streaks.size(), 4000u);
-  EXPECT_EQ(all.streaks[0].cell / atlas.shapes, 4);
+  EXPECT_EQ(all.streaks[0].cell / atlas.columns(), row_of(3.0612e-4));
+  // Fainter than the atlas can draw (its faintest row, 2^−13, over the smallest column gain):
+  // thinned to that, never dropped outright. A 20 m/s drop is covered half as long, 1.53e-4.
+  sim::Frame fast = faint_rain();
+  for (glm::vec3& v : fast.drops.velocity) v.y = -18.0f;
+  const FrameValues floor = build_frame_values(fast, look);
+  const double survival = 1.5306e-4 / streak_atlas_faintest_coverage(atlas);
+  ASSERT_LT(survival, 1.0);
+  EXPECT_NEAR(static_cast<double>(floor.streaks.size()), 4000.0 * survival, 130.0);
+  for (const StreakValue& s : floor.streaks) {
+    EXPECT_EQ(s.cell / atlas.columns(), row_of(streak_atlas_faintest_coverage(atlas)));
+  }
+}
+
+TEST(FrameValues, UnsetLevelOfDetailIsCoarserAtPreviewThanAtFinal) {
+  ExportParams look = default_look();
+  ASSERT_LT(look.min_streak_coverage, 0.0);  // not set
+  look.quality = Quality::preview;
+  EXPECT_EQ(streak_coverage_threshold(look), kPreviewStreakCoverage);
+  look.quality = Quality::final;
+  EXPECT_EQ(streak_coverage_threshold(look), kFinalStreakCoverage);
+  EXPECT_LT(kFinalStreakCoverage, kPreviewStreakCoverage);
+  look.min_streak_coverage = 0.0;  // set: whatever the quality
+  EXPECT_EQ(streak_coverage_threshold(look), 0.0);
+  // The 4000 faint streaks: a preview keeps about a third as many as a final render.
+  look.min_streak_coverage = -1.0;
+  look.quality = Quality::preview;
+  const std::size_t preview = build_frame_values(faint_rain(), look).streaks.size();
+  look.quality = Quality::final;
+  const std::size_t final_count = build_frame_values(faint_rain(), look).streaks.size();
+  EXPECT_NEAR(static_cast<double>(preview) / static_cast<double>(final_count), 0.3, 0.1);
 }
 
 TEST(FrameValues, ThinningKeepsTheSameDropsFromFrameToFrame) {
@@ -210,8 +306,10 @@ TEST(FrameValues, ThinningKeepsTheSameDropsFromFrameToFrame) {
   for (glm::vec3& p : second.drops.position) p.y -= 0.05f;
   std::reverse(second.drops.id.begin(), second.drops.id.end());
   std::reverse(second.drops.position.begin(), second.drops.position.end());
-  const FrameValues a = build_frame_values(first, default_look());
-  const FrameValues b = build_frame_values(second, default_look());
+  ExportParams look = default_look();
+  look.min_streak_coverage = 0.01;
+  const FrameValues a = build_frame_values(first, look);
+  const FrameValues b = build_frame_values(second, look);
   ASSERT_EQ(a.streaks.size(), b.streaks.size());
   ASSERT_FALSE(a.streaks.empty());
   // b lists the same drops in reverse: its last streak is a's first, moved down 5 cm.
@@ -354,6 +452,7 @@ TEST(FrameValues, SameFrameGivesIdenticalValuesWhateverTheThreadCount) {
   look.sphere_distance_m = 3.0;
   look.width = 1920;
   look.height = 1080;
+  look.camera.exposure_s = 0.0;  // near drops stay spheres
   const sim::Frame frame = synthetic_rain(60000, look.camera, 16.0 / 9.0, 12.0, 2.0, 3);
   const FrameValues one = build_frame_values(frame, look, {}, 1);
   ASSERT_GT(one.drops.size(), 100u);

@@ -8,6 +8,7 @@
 
 #include "povgen/frame_text.h"
 #include "povgen/number_format.h"
+#include "povgen/rain_look.h"
 #include "povgen/templates.h"
 
 namespace raintrace::povgen {
@@ -24,18 +25,23 @@ std::string fog_text(const FogParams& fog, const sim::Camera& camera) {
   if (fog.mode == FogMode::ground) {
     // Ground fog: full density below the ground, thinning with height over depth_m. POV-Ray's
     // `distance` is where fog reaches 63 % (e^-1), i.e. 1 / extinction.
+    // A flash lights the mist: the light of RT_LightningLight·RT_KeyLight scattered by a cloud
+    // of droplets that scatters about a quarter of it toward the camera.
     text += "fog{fog_type 2 distance " + format_number(1.0 / fog.density_per_m) + " color rgb " +
-            colour + " fog_offset 0 fog_alt " + format_number(fog.depth_m) + " up y}\n";
+            colour + "+RT_Flash*RT_LightningLight*RT_KeyLight/4*<0.85,0.88,1>" +
+            " fog_offset 0 fog_alt " + format_number(fog.depth_m) + " up y}\n";
     return text;
   }
   // Media mist: a hollow sphere of radius depth_m around the camera (the camera must be inside
   // a hollow container or media silently does nothing). Extinction = scattering + absorption =
   // density; 70 % of it scatters light from the environment's lights (streetlight cones),
-  // 30 % absorbs (Lambert-Beer). Method 3 without jitter keeps renders repeatable.
+  // 30 % absorbs (Lambert-Beer). Method 3 without jitter keeps renders repeatable. The
+  // container's surface has no diffuse and no ambient: POV-Ray then skips its light loop.
   const double scattering = 0.7 * fog.density_per_m;
   const double absorption = 0.3 * fog.density_per_m;
   text += "sphere{" + vec(camera.position) + "," + format_number(fog.depth_m) +
-          " hollow\n texture{pigment{rgbt 1}}\n interior{media{method 3 intervals 1 samples 3"
+          " hollow\n texture{pigment{rgbt 1} finish{ambient 0 diffuse 0}}\n"
+          " interior{media{method 3 intervals 1 samples 3"
           " jitter 0\n  scattering{1,rgb " +
           format_number(scattering) + "*" + colour + " extinction 1}\n  absorption rgb " +
           format_number(absorption) + "\n  emission RT_Flash*" +
@@ -180,20 +186,43 @@ std::string scene_inc_text(const ExportParams& look) {
   text += "#declare RT_LightningLight=" + format_number(look.lightning_light) + ";\n";
   text += bolt_macros_text();
   text += "#declare RT_CameraPosition=" + vec(look.camera.position) + ";\n";
-  text += "#include \"" + std::string{kMaterialsInclude} + "\"\n";
+  text += "#ifndef(RT_LightsOnly) #declare RT_LightsOnly=0; #end\n";
   text += "#if(RT_Mask)\nbackground{rgb 0}\n#else\n";
   text += "#declare RT_KeyLight=1;\n";
+  if (look.fog.mode == FogMode::media && look.fog.density_per_m > 0.0) {
+    // Media mist scatters the lamps' light itself: night_street's painted lamp haze would count
+    // it twice.
+    text += "#declare RT_LampHaze=0;\n";
+  }
   if (environment_plate_applies(look)) {
     text += environment_with_plate_text(look, aspect);
   } else {
     text += "#include \"" + std::string{kEnvironmentInclude} + "\"\n";
   }
+  // The light of the surroundings that a drop refracts (docs/rain-appearance.md): declared by
+  // the environment; without it the rain shows only the lights it scatters.
+  text += "#ifndef(RT_RainSurround) #declare RT_RainSurround=rgb 0; #end\n";
   text += fog_text(look.fog, look.camera);
+  // The rain medium holds no simulated drop, so the environment plate may hold it exactly:
+  // frames that draw the plate leave it out and pay nothing. Elsewhere a preview draws its fog
+  // form (free, without the lights' scattering, 75 % of the medium's effect on the default
+  // street) and final the media (+0.6 CPU s a 640×360 frame). Guarded in POV-Ray, so
+  // Declare=RT_Preview=0 still renders a preview folder as the final scene.
+  const std::string medium = rain_medium_text(look);
+  if (!medium.empty()) {
+    text += medium;
+    text += environment_plate_applies(look)
+                ? "#if(!RT_LightsOnly)\nRT_RainMedium()\n#end\n"
+                : "#if(RT_Preview)\nRT_RainFog()\n#else\nRT_RainMedium()\n#end\n";
+  }
   // The flash lights the whole scene from the bolt's top; RT_KeyLight comes from the
   // environment, so lightning_light is relative to its main light.
   text +=
       "#if(RT_Flash>0)\nlight_source{RT_FlashPosition color rgb "
       "RT_Flash*RT_LightningLight*RT_KeyLight*<0.85,0.88,1>}\n#end\n#end\n";
+  // After the environment, which may declare RT_RainSurround for the materials.
+  text += drop_lobes_text();
+  text += "#include \"" + std::string{kMaterialsInclude} + "\"\n";
   return text;
 }
 

@@ -100,8 +100,41 @@ TEST(SceneFiles, SceneIncHasTheCameraAndMaterials) {
   EXPECT_TRUE(contains(inc, "#include \"raintrace_materials.inc\""));
   EXPECT_TRUE(contains(inc, "#include \"environment.inc\""));
   EXPECT_TRUE(contains(inc, "#declare RT_LightningLight=8;"));
-  EXPECT_FALSE(contains(inc, "fog{"));
-  EXPECT_FALSE(contains(inc, "media{"));
+  EXPECT_FALSE(contains(inc, "fog{fog_type 2"));  // no [fog]
+  // The drop's scattering lobes, declared before the materials that use them.
+  EXPECT_LT(inc.find("#declare RT_DropBrilliance="), inc.find("raintrace_materials.inc"));
+  EXPECT_LT(inc.find("#declare RT_DropLobeBack="), inc.find("raintrace_materials.inc"));
+  // The materials come after the environment, which may declare RT_RainSurround.
+  EXPECT_LT(inc.find("environment.inc"), inc.find("raintrace_materials.inc"));
+}
+
+TEST(SceneFiles, RainMediumStartsWhereTheSimulatedRainEnds) {
+  ExportParams look;
+  look.rain.far_m = 7.0;
+  look.environment_plate = false;
+  const std::string inc = scene_inc_text(look);
+  // 5 mm/h: δ-scaled extinction 3.55e-4 /m (sim/rain_medium.h); HG scattering of a quarter of
+  // it (POV-Ray's light colour is E/π) with extinction 4, and emission of the surroundings.
+  EXPECT_TRUE(contains(inc, "#declare RT_RainExtinction=0.000355"));
+  EXPECT_TRUE(contains(inc, "scattering{5,RT_RainExtinction/4 eccentricity 0.76"));
+  EXPECT_TRUE(contains(inc, " extinction 4}"));
+  EXPECT_TRUE(contains(inc, "emission RT_RainExtinction*RT_RainSurround"));
+  // Camera at z = −5 looking along +z: the half-space z >= 2 (depth 7), within 200 m.
+  EXPECT_TRUE(contains(inc, "sphere{<0,1.6,-5>,200}\n plane{<0,0,-1>,-2}"));
+  // Preview without a plate: the fog form, capped at 200 m (transmit e^−200σ); final: media.
+  EXPECT_TRUE(contains(inc,
+                       "fog{fog_type 1 distance 1/RT_RainExtinction color rgb "
+                       "RT_RainSurround transmit exp(-200*RT_RainExtinction)}"));
+  EXPECT_TRUE(contains(inc, "#if(RT_Preview)\nRT_RainFog()\n#else\nRT_RainMedium()\n#end\n"));
+  // With the plate it is traced into the plate and left out of the frames that draw it.
+  look.environment_plate = true;
+  EXPECT_TRUE(contains(scene_inc_text(look), "#if(!RT_LightsOnly)\nRT_RainMedium()\n#end\n"));
+  // No rain, or switched off: no medium.
+  look.rain_medium = false;
+  EXPECT_FALSE(contains(scene_inc_text(look), "media{"));
+  look.rain_medium = true;
+  look.rain.rate_mm_per_h = 0.0;
+  EXPECT_FALSE(contains(scene_inc_text(look), "media{"));
 }
 
 TEST(SceneFiles, FogModes) {
@@ -111,6 +144,9 @@ TEST(SceneFiles, FogModes) {
   look.fog.depth_m = 4.0;
   // distance = 1/density = 20 m: fog reaches 1 − e^-1 there.
   EXPECT_TRUE(contains(scene_inc_text(look), "fog{fog_type 2 distance 20 "));
+  // A flash lights the ground mist too.
+  EXPECT_TRUE(contains(scene_inc_text(look), "+RT_Flash*RT_LightningLight*RT_KeyLight/4*"));
+  EXPECT_FALSE(contains(scene_inc_text(look), "RT_LampHaze"));
   EXPECT_TRUE(contains(scene_inc_text(look), "fog_alt 4 up y}"));
   look.fog.mode = FogMode::media;
   const std::string media = scene_inc_text(look);
@@ -119,8 +155,11 @@ TEST(SceneFiles, FogModes) {
   EXPECT_TRUE(contains(media, "scattering{1,rgb 0.035*"));
   EXPECT_TRUE(contains(media, "absorption rgb 0.015"));
   EXPECT_TRUE(contains(media, "jitter 0"));
+  // Media mist scatters the lamps' light itself: the environment's painted lamp haze is off,
+  // declared before the environment reads it.
+  EXPECT_LT(media.find("#declare RT_LampHaze=0;"), media.find("#include \"environment.inc\""));
   look.fog.density_per_m = 0.0;
-  EXPECT_FALSE(contains(scene_inc_text(look), "media{"));
+  EXPECT_FALSE(contains(scene_inc_text(look), "absorption rgb"));
 }
 
 TEST(SceneFiles, EnvironmentPlateOnlyWhereItStandsInFaithfully) {

@@ -1,4 +1,5 @@
-// Streak atlas: size, opacity halving per row, shapes, the cell lookup and the PNG file.
+// Streak atlas: rows scale the opacity by 2^(1/8), every column's profile carries exactly the
+// drop's area of coverage, the cell lookup and the 16-bit PNG file.
 #include "povgen/streak_atlas.h"
 
 #include <OpenImageIO/imageio.h>
@@ -6,104 +7,146 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <random>
 
 namespace raintrace::povgen {
 namespace {
 
-int alpha_at(const std::vector<std::uint8_t>& px, const StreakAtlasLayout& l, int x, int y) {
-  return px[(static_cast<std::size_t>(y) * l.width() + x) * 4 + 3];
+/// Alpha (0..1) of a texel of cell (row, column), texel (cx, cy) with cy = 0 the cell's bottom.
+double alpha_at(const std::vector<std::uint16_t>& px, const StreakAtlasLayout& l, int row,
+                int column, int cx, int cy) {
+  const int x = column * l.cell_width + cx;
+  const int y = l.height() - 1 - (row * l.cell_height + cy);
+  return px[(static_cast<std::size_t>(y) * l.width() + x) * 2 + 1] / 65535.0;
 }
 
-/// Largest alpha within one cell (row counted from the bottom, as POV-Ray's v).
-int peak_alpha(const std::vector<std::uint8_t>& px, const StreakAtlasLayout& l, int row,
-               int column) {
-  int peak = 0;
-  for (int y = 0; y < l.cell_height; ++y) {
-    const int py = l.height() - 1 - (row * l.cell_height + y);
-    for (int x = 0; x < l.cell_width; ++x) {
-      peak = std::max(peak, alpha_at(px, l, column * l.cell_width + x, py));
+/// Mean of a cell as POV-Ray's bilinear filter spreads it over a quad whose corners sit on the
+/// centres of the cell's corner texels: the trapezoid rule over the texels.
+double cell_mean(const std::vector<std::uint16_t>& px, const StreakAtlasLayout& l, int row,
+                 int column) {
+  double sum = 0.0;
+  for (int cy = 0; cy < l.cell_height; ++cy) {
+    const double wy = (cy == 0 || cy == l.cell_height - 1) ? 0.5 : 1.0;
+    for (int cx = 0; cx < l.cell_width; ++cx) {
+      const double wx = (cx == 0 || cx == l.cell_width - 1) ? 0.5 : 1.0;
+      sum += wx * wy * alpha_at(px, l, row, column, cx, cy);
     }
   }
-  return peak;
+  return sum / ((l.cell_width - 1) * (l.cell_height - 1));
 }
 
-TEST(StreakAtlas, EachRowHalvesTheOpacity) {
+TEST(StreakAtlas, RowsScaleTheOpacityByAnEighthOfAHalving) {
   const StreakAtlasLayout layout;
   const auto px = streak_atlas_pixels(layout);
-  ASSERT_EQ(px.size(), static_cast<std::size_t>(layout.width()) * layout.height() * 4);
-  // Peak of row r: 255·2^-r times the profile's maximum. Across the body the profile is 1; the
-  // fade along is 0.85 + 0.15·y, largest where the leading cap (18 % of the cell) begins:
-  // y = 0.82 → 0.973.
-  for (int row = 0; row < layout.opacity_levels; ++row) {
-    const double expected = 255.0 * 0.973 * std::ldexp(1.0, -row);
-    EXPECT_NEAR(peak_alpha(px, layout, row, 0), expected, 1.0 + 0.01 * expected) << row;
+  ASSERT_EQ(px.size(), static_cast<std::size_t>(layout.width()) * layout.height() * 2);
+  EXPECT_DOUBLE_EQ(layout.row_opacity(8), 0.5);
+  EXPECT_NEAR(layout.faintest_opacity(), std::exp2(-13.0), 1e-15);
+  // Every cell is its column's profile times its row's opacity (to 16-bit rounding).
+  const int long_column = layout.motions - 1;
+  const double top =
+      alpha_at(px, layout, 0, long_column, layout.cell_width / 2, layout.cell_height / 2);
+  EXPECT_GT(top, 0.95);
+  for (const int row : {3, 8, 40, 96}) {
+    EXPECT_NEAR(
+        alpha_at(px, layout, row, long_column, layout.cell_width / 2, layout.cell_height / 2),
+        top * layout.row_opacity(row), 0.6 / 65535.0)
+        << row;
   }
 }
 
-TEST(StreakAtlas, StreaksFadeTowardTheirRimAndEnds) {
-  const StreakAtlasLayout layout;
+TEST(StreakAtlas, EveryColumnCarriesTheDropsAreaOfCoverage) {
+  // A quad of the drop's diameter D (resolved) and length (1 + motion)·D, at the middle's
+  // opacity min(1, 1/motion), must integrate to the disc's πD²/4 — the same for every motion
+  // (Garg & Nayar: the exposure spreads a drop's light, it adds none). A sub-pixel quad of any
+  // width w at opacity × D/w carries the same. In cell units: mean × gain × middle ×
+  // (1 + motion) = π/4, for the default cells as POV-Ray filters them. The gains stay close
+  // to the profile's own peak: within 25 %.
+  StreakAtlasLayout layout;
+  layout.opacity_levels = 1;
   const auto px = streak_atlas_pixels(layout);
-  // Row 0 is the bottom band; its middle image row is height − cell_height/2.
-  const int middle_y = layout.height() - layout.cell_height / 2;
-  const int centre = alpha_at(px, layout, layout.cell_width / 2, middle_y);
-  const int rim = alpha_at(px, layout, 0, middle_y);
-  EXPECT_GT(centre, 200);
-  EXPECT_LT(rim, centre / 2);
-  // The trailing end (top of the cell) and leading end (bottom) are clear at the very edge.
-  EXPECT_LT(alpha_at(px, layout, layout.cell_width / 2, layout.height() - layout.cell_height), 40);
-  EXPECT_LT(alpha_at(px, layout, layout.cell_width / 2, layout.height() - 1), 40);
+  for (int column = 0; column < layout.columns(); ++column) {
+    const double motion = streak_atlas_motion(layout, column % layout.motions);
+    const double middle = motion > 1.0 ? 1.0 / motion : 1.0;
+    EXPECT_NEAR(cell_mean(px, layout, 0, column) * streak_atlas_column_gain(layout, column) *
+                    middle * (1.0 + motion),
+                std::numbers::pi / 4, 0.001)
+        << "column " << column << ", motion " << motion;
+    EXPECT_GT(streak_atlas_column_gain(layout, column), 0.75) << column;
+    EXPECT_LT(streak_atlas_column_gain(layout, column), 1.25) << column;
+  }
 }
 
-TEST(StreakAtlas, FlatterShapesHaveShorterLeadingEnds) {
-  // The leading cap shrinks with flatness: a few texels above the cell bottom a flattened
-  // drop's streak is already full while the round one is still tapering.
+TEST(StreakAtlas, ResolvedStreaksShowTheDropsOutlineSubPixelOnesAreFlatAcross) {
   const StreakAtlasLayout layout;
   const auto px = streak_atlas_pixels(layout);
-  const int y = layout.height() - 4;
-  const int round = alpha_at(px, layout, layout.cell_width / 2, y);
-  const int flat =
-      alpha_at(px, layout, (layout.shapes - 1) * layout.cell_width + layout.cell_width / 2, y);
-  EXPECT_GT(flat, round);
+  const int middle = layout.cell_height / 2;
+  // Motion 2: resolved is clear at its rim, full on its axis.
+  const int resolved = 3;  // motion 2
+  EXPECT_NEAR(streak_atlas_motion(layout, resolved), 2.0, 0.0);
+  EXPECT_GT(alpha_at(px, layout, 0, resolved, layout.cell_width / 2, middle), 0.9);
+  EXPECT_LT(alpha_at(px, layout, 0, resolved, 0, middle), 0.5);
+  // Sub-pixel: the same across the cell, its peak in the middle of the streak.
+  const int sub_pixel = resolved + layout.motions;
+  const double centre = alpha_at(px, layout, 0, sub_pixel, layout.cell_width / 2, middle);
+  EXPECT_NEAR(centre, 1.0, 1e-4);
+  EXPECT_NEAR(alpha_at(px, layout, 0, sub_pixel, 0, middle), centre, 1e-9);
+  // Both end clear: nothing is drawn before the drop arrives or after it has gone.
+  EXPECT_LT(alpha_at(px, layout, 0, sub_pixel, 0, 0), 0.05);
+  EXPECT_LT(alpha_at(px, layout, 0, sub_pixel, 0, layout.cell_height - 1), 0.05);
 }
 
 TEST(StreakAtlas, CellLookup) {
-  const StreakAtlasLayout layout;  // 8 shapes × 8 levels
-  EXPECT_EQ(streak_atlas_cell(layout, 1.0, 1.0), 0);
-  EXPECT_EQ(streak_atlas_cell(layout, 0.5, 1.0), 7);
-  EXPECT_EQ(streak_atlas_cell(layout, 1.0, 0.25), 2 * 8);        // −log2 0.25 = 2
-  EXPECT_EQ(streak_atlas_cell(layout, 0.75, 0.125), 3 * 8 + 4);  // flatness 0.5 → column 3.5→4
-  EXPECT_EQ(streak_atlas_cell(layout, 1.0, 1.0 / 128), 7 * 8);
-  EXPECT_EQ(streak_atlas_cell(layout, 1.0, 1.0 / 512), -1);  // too faint: not written
-  EXPECT_EQ(streak_atlas_cell(layout, 1.0, 0.0), -1);
+  const StreakAtlasLayout layout;  // 16 columns
+  const auto resolved = StreakFootprint::resolved;
+  const auto sub_pixel = StreakFootprint::sub_pixel;
+  // Columns: motion 0, 0.5, 1, 2, … 32 (nearest in log2), resolved then sub-pixel.
+  auto column = [&](double motion, StreakFootprint footprint) {
+    return streak_atlas_cell(layout, motion, footprint, 0.01) % layout.columns();
+  };
+  EXPECT_EQ(column(0.0, resolved), 0);
+  EXPECT_EQ(column(0.3, resolved), 0);
+  EXPECT_EQ(column(0.5, resolved), 1);
+  EXPECT_EQ(column(1.3, resolved), 2);   // log2 1.3 = 0.38 → 1
+  EXPECT_EQ(column(80.0, resolved), 7);  // 32 and beyond
+  EXPECT_EQ(column(80.0, sub_pixel), 15);
+  // Rows: the nearest 2^(−r/8) to the opacity times the column's gain; above 1 counts as 1.
+  auto row = [&](double motion, StreakFootprint footprint, double opacity) {
+    return streak_atlas_cell(layout, motion, footprint, opacity) / layout.columns();
+  };
+  const double gain = streak_atlas_column_gain(layout, 15);
+  EXPECT_EQ(row(80.0, sub_pixel, 0.5), static_cast<int>(std::lround(-8.0 * std::log2(0.5 * gain))));
+  EXPECT_EQ(row(80.0, sub_pixel, 2.0), row(80.0, sub_pixel, 1.0));
+  // Too faint for the last row, by more than half a step: −1 (frame_values never asks).
+  const double floor = streak_atlas_faintest_coverage(layout);
+  EXPECT_GE(streak_atlas_cell(layout, 80.0, sub_pixel, floor), 0);
+  EXPECT_EQ(streak_atlas_cell(layout, 1.0, resolved, 0.0), -1);
+  EXPECT_EQ(streak_atlas_cell(layout, 1.0, resolved, 1e-310), -1);  // subnormal
+  EXPECT_EQ(streak_atlas_cell(layout, 1.0, resolved, layout.faintest_opacity() / 4.0), -1);
 }
 
-TEST(StreakAtlas, RowIsTheNearestHalvingOfTheOpacity) {
-  // The row is round(−log2 opacity), the column round(flatness · 7): checked against libm's
-  // log2 and lround for opacities spread evenly in log2 (row boundaries at 2^−(r+½)).
+TEST(StreakAtlas, RowIsTheNearestEighthOfAHalvingWithinFourPercent) {
+  // Checked against libm for opacities spread evenly in log2; the chosen row is never more than
+  // 2^(1/16) = 4.4 % away from the opacity times the column's gain.
   const StreakAtlasLayout layout;
+  const double gain = streak_atlas_column_gain(layout, layout.columns() - 1);
   std::mt19937_64 rng(3);
-  std::uniform_real_distribution<double> level(0.0, 9.0);
-  std::uniform_real_distribution<double> ratio(0.5, 1.0);
+  std::uniform_real_distribution<double> level(0.0, 12.0);
   for (int i = 0; i < 100000; ++i) {
     const double opacity = std::exp2(-level(rng));
-    const double axis_ratio = ratio(rng);
-    const auto row = static_cast<int>(std::lround(-std::log2(opacity)));
-    const auto column = static_cast<int>(std::lround((1.0 - axis_ratio) / 0.5 * 7));
-    const int expected = row >= 8 ? -1 : row * 8 + column;
-    ASSERT_EQ(streak_atlas_cell(layout, axis_ratio, opacity), expected) << opacity;
+    const int cell = streak_atlas_cell(layout, 100.0, StreakFootprint::sub_pixel, opacity);
+    const auto row = static_cast<int>(std::lround(-8.0 * std::log2(opacity * gain)));
+    ASSERT_EQ(cell / layout.columns(), row) << opacity;
+    ASSERT_NEAR(layout.row_opacity(row) / (opacity * gain), 1.0, 0.0443) << opacity;
   }
-  EXPECT_EQ(streak_atlas_cell(layout, 1.0, 0.7072), 0);   // −log2 = 0.49987
-  EXPECT_EQ(streak_atlas_cell(layout, 1.0, 0.7070), 8);   // −log2 = 0.50029
-  EXPECT_EQ(streak_atlas_cell(layout, 1.0, 2.0), 0);      // opacity above 1 counts as 1
-  EXPECT_EQ(streak_atlas_cell(layout, 1.0, 1e-310), -1);  // subnormal
 }
 
-TEST(StreakAtlas, PngHoldsThePixels) {
-  const StreakAtlasLayout layout{4, 2, 8, 16};
+TEST(StreakAtlas, PngHoldsTheSixteenBitPixels) {
+  StreakAtlasLayout layout;
+  layout.motions = 2;
+  layout.opacity_levels = 3;
   const auto path = std::filesystem::temp_directory_path() / "raintrace_atlas_test.png";
   write_streak_atlas(path, layout);
-  // PNG alpha is unassociated: ask OpenImageIO not to premultiply on reading.
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
   auto in = OIIO::ImageInput::open(path.string(), &config);
@@ -111,9 +154,10 @@ TEST(StreakAtlas, PngHoldsThePixels) {
   const OIIO::ImageSpec& spec = in->spec();
   EXPECT_EQ(spec.width, layout.width());
   EXPECT_EQ(spec.height, layout.height());
-  EXPECT_EQ(spec.nchannels, 4);
-  std::vector<std::uint8_t> read(static_cast<std::size_t>(spec.width) * spec.height * 4);
-  ASSERT_TRUE(in->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, read.data()));
+  EXPECT_EQ(spec.nchannels, 2);
+  EXPECT_EQ(spec.format, OIIO::TypeDesc::UINT16);
+  std::vector<std::uint16_t> read(static_cast<std::size_t>(spec.width) * spec.height * 2);
+  ASSERT_TRUE(in->read_image(0, 0, 0, 2, OIIO::TypeDesc::UINT16, read.data()));
   in->close();
   EXPECT_EQ(read, streak_atlas_pixels(layout));
   std::filesystem::remove(path);

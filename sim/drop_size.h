@@ -18,6 +18,10 @@ double marshall_palmer_lambda_per_mm(double rate_mm_per_h);
 double marshall_palmer_number_density(double rate_mm_per_h, double dmin_mm, double dmax_mm);
 /// Mean diameter of the truncated distribution, mm (1/Λ when untruncated).
 double marshall_palmer_mean_diameter_mm(double rate_mm_per_h, double dmin_mm, double dmax_mm);
+/// Extinction coefficient of Marshall-Palmer rain, 1/m: ∫ N(D)·Q·πD²/4 dD over [dmin, dmax] mm
+/// with the extinction efficiency Q = 2 of drops much larger than the wavelength (geometric
+/// shadow + diffraction). Untruncated: N0·π·Q/(2Λ³) — 1.0e-3 /m at 5 mm/h.
+double marshall_palmer_extinction_per_m(double rate_mm_per_h, double dmin_mm, double dmax_mm);
 /// Liquid water content ρ_w·∫ (π/6)·D³·N(D) dD over [dmin, dmax], g/m³ (untruncated: π·N0·ρ/Λ⁴,
 /// ≈ 0.089·R^0.84).
 double marshall_palmer_water_content(double rate_mm_per_h, double dmin_mm, double dmax_mm);
@@ -36,6 +40,10 @@ class DropSizeModel {
   [[nodiscard]] double number_density_per_m3() const { return m_number_density; }
   /// Drops crossing a horizontal plane per m² per s (∫ N(D)·v(D) dD).
   [[nodiscard]] double number_flux_per_m2_s() const { return m_number_flux; }
+  /// Geometric cross-section of the drops per m³ of air, ∫ N(D)·πD²/4 dD, m²/m³ = 1/m: the
+  /// share of a line of sight's length that drops cover, per metre (the rain's optical depth
+  /// per metre in geometric optics, without diffraction).
+  [[nodiscard]] double cross_section_per_m() const { return m_cross_section_per_m; }
   /// Mean diameter of drops in the air, m.
   [[nodiscard]] double mean_diameter_m() const { return m_mean_diameter_m; }
   /// Applied N0 / Marshall-Palmer N0 (for uniform: drops per m³ per mm of width).
@@ -55,6 +63,7 @@ class DropSizeModel {
   double m_number_density = 0.0;
   double m_number_flux = 0.0;
   double m_mean_diameter_m = 0.0;
+  double m_cross_section_per_m = 0.0;
   double m_scale = 0.0;
 };
 

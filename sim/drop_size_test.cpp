@@ -45,6 +45,42 @@ TEST(MarshallPalmer, MeanDiameterIsOneOverLambdaAdjustedForTruncation) {
   EXPECT_NEAR(marshall_palmer_mean_diameter_mm(5.0, 0.5, 1e3), 0.5 + 1.0 / l, 1e-12);
 }
 
+TEST(MarshallPalmer, ExtinctionIsTwiceTheCrossSectionOfTheDrops) {
+  // Untruncated: Q·π/4·N0·2/Λ³ = π·N0/Λ³ = 0.365·R^0.63 /km, the Marshall-Palmer rain
+  // extinction used for optical links; at 5 mm/h 1.0e-3 /m (issue 12's figure).
+  EXPECT_NEAR(marshall_palmer_extinction_per_m(5.0, 0.0, 50.0), 1.006e-3, 0.005e-3);
+  for (const double r : {1.0, 25.0}) {
+    EXPECT_NEAR(marshall_palmer_extinction_per_m(r, 0.0, 50.0), 0.365e-3 * std::pow(r, 0.63),
+                0.005 * 0.365e-3 * std::pow(r, 0.63));
+  }
+  const double l = marshall_palmer_lambda_per_mm(5.0);
+  const double numeric = integrate(
+      [&](double d) {
+        return 2.0 * std::numbers::pi / 4.0 * d * d * 1e-6 * 8000.0 * std::exp(-l * d);
+      },
+      0.5, 6.0);
+  EXPECT_NEAR(marshall_palmer_extinction_per_m(5.0, 0.5, 6.0), numeric, 1e-6 * numeric);
+}
+
+TEST(DropSizeModel, CrossSectionIsHalfTheExtinctionOfTheRateMatchedDistribution) {
+  // The model rescales N0 so the drops carry the rate; its cross-section ∫N·πD²/4 is then
+  // that scale times half the Marshall-Palmer extinction (Q = 2 counts diffraction too).
+  RainParams rain;
+  rain.rate_mm_per_h = 5.0;
+  const DropSizeModel model(rain);
+  EXPECT_NEAR(model.cross_section_per_m(),
+              model.concentration_scale() * 0.5 * marshall_palmer_extinction_per_m(5.0, 0.5, 6.0),
+              1e-4 * model.cross_section_per_m());
+  // One size: N·πD²/4.
+  rain.distribution = DropSizeDistribution::uniform;
+  rain.diameter_min_mm = 2.0;
+  rain.diameter_max_mm = 2.0;
+  const DropSizeModel single(rain);
+  EXPECT_NEAR(single.cross_section_per_m(),
+              single.number_density_per_m3() * std::numbers::pi / 4.0 * 4e-6,
+              1e-9 * single.cross_section_per_m());
+}
+
 TEST(MarshallPalmer, WaterContentMatchesPublishedFit) {
   // Untruncated LWC = π·ρ·N0/Λ⁴ = 0.0889 g/m³ at 1 mm/h, the textbook 0.089·R^0.84.
   for (const double r : {1.0, 5.0, 25.0}) {

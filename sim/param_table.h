@@ -253,8 +253,14 @@ constexpr bool well_formed(std::span<const Param<P>> table) {
       if (table[j].section == row.section && table[j].key == row.key) return false;
     }
     if (row.order == Order::none) continue;
-    const Param<P>* other = find_param(table, row.section, row.other);
-    if (other == nullptr || other == &row || other->type != ParamType::number ||
+    // Compared by index, not by pointer: GCC's UBSan instruments pointer comparisons, which
+    // then stop being constant expressions and the static_assert no longer compiles.
+    std::size_t other = 0;
+    while (other < table.size() &&
+           !(table[other].section == row.section && table[other].key == row.other)) {
+      ++other;
+    }
+    if (other == table.size() || other == i || table[other].type != ParamType::number ||
         row.type != ParamType::number) {
       return false;
     }

@@ -75,6 +75,11 @@ struct WindParams {
   double gust_strength = 20.0;
   /// Horizontal direction the gusts push along (normalised; y ignored).
   glm::dvec3 gust_direction{1.0, 0.0, 0.0};
+  /// Time scale of the gusts: the gust wind at time t is gust_strength·w(2t / gust_period_s),
+  /// so one whole pattern of eq. 5 (which repeats every 2 s as printed) takes gust_period_s.
+  /// 2 is the paper's equation as printed: a 12.5 Hz flutter that drag filters out of the
+  /// drops. The default, 20, swells over 3–20 s with a 0.8 s flutter inside them.
+  double gust_period_s = 20.0;
   /// Amplitude (RMS speed) of smooth spatial turbulence; 0: off.
   double turbulence_m_per_s = 0.0;
   /// Length scale of the turbulence.
@@ -89,6 +94,7 @@ inline constexpr Param<WindParams> kWindParams[] = {
     number("wind", "gust_strength", &WindParams::gust_strength, "m/s", Range::closed(0, 500)),
     vector("wind", "gust_direction", &WindParams::gust_direction, "", Range::closed(-1000, 1000))
         .with_note("x or z ≠ 0"),
+    number("wind", "gust_period_s", &WindParams::gust_period_s, "s", Range::closed(0.1, 600)),
     number("wind", "turbulence_m_per_s", &WindParams::turbulence_m_per_s, "m/s",
            Range::closed(0, 30)),
     number("wind", "turbulence_scale_m", &WindParams::turbulence_scale_m, "m",

@@ -41,7 +41,11 @@ Wind::Wind(const WindParams& params, std::uint64_t seed)
 
 glm::dvec3 Wind::uniform_at(double t_s) const {
   glm::dvec3 w = m_params.velocity_m_per_s;
-  if (m_params.gusts) w += m_gust_dir * (m_params.gust_strength * gust_function(t_s));
+  if (m_params.gusts) {
+    // Eq. 5 unchanged, only its time axis stretched: gust_period_s = 2 is the paper as printed.
+    const double t = t_s * kGustFunctionPeriodS / m_params.gust_period_s;
+    w += m_gust_dir * (m_params.gust_strength * gust_function(t));
+  }
   return w;
 }
 

@@ -33,8 +33,11 @@ inline float sin_approx(float x) {
 }
 
 /// The paper's eq. 5: w(t) = cos(πt)·cos(3πt)·cos(5πt)·cos(7πt)·(−0.1)·sin(25πt), t in s.
-/// Dimensionless, |w| <= 0.1.
+/// Dimensionless, |w| <= 0.1, periodic with period 2 s (every factor repeats after 2 s).
 double gust_function(double t_s);
+
+/// The period of gust_function() as printed, s.
+inline constexpr double kGustFunctionPeriodS = 2.0;
 
 class Wind {
  public:
@@ -50,7 +53,8 @@ class Wind {
 
   Wind(const WindParams& params, std::uint64_t seed);
 
-  /// Steady + gust at time t, m/s (the same everywhere).
+  /// Steady + gust at time t, m/s (the same everywhere). The gust is
+  /// gust_strength·w(t·kGustFunctionPeriodS / gust_period_s) along gust_direction.
   [[nodiscard]] glm::dvec3 uniform_at(double t_s) const;
   /// Full wind at a point, m/s (uniform part + turbulence).
   [[nodiscard]] glm::vec3 at(const glm::vec3& p, double t_s) const;

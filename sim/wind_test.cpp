@@ -29,11 +29,33 @@ TEST(Wind, GustsScaleAlongTheirHorizontalDirection) {
   p.gusts = true;
   p.gust_strength = 20.0;
   p.gust_direction = {0.0, 5.0, 3.0};  // y ignored → +z
+  p.gust_period_s = 2.0;               // eq. 5 as printed
   const Wind wind(p, 1);
   const glm::dvec3 w = wind.uniform_at(0.02);
   EXPECT_NEAR(w.x, 1.0, 1e-12);
   EXPECT_NEAR(w.y, 0.0, 1e-12);
   EXPECT_NEAR(w.z, 2.0 + 20.0 * -0.0843631, 1e-5);
+}
+
+TEST(Wind, GustPeriodStretchesEquationFiveWithoutChangingIt) {
+  WindParams p;
+  p.gusts = true;
+  p.gust_strength = 20.0;
+  // 2 s is eq. 5 as printed: the gust at t is 20·w(t).
+  p.gust_period_s = 2.0;
+  const Wind printed(p, 1);
+  for (const double t : {0.02, 0.06, 0.37, 1.5}) {
+    EXPECT_NEAR(printed.uniform_at(t).x, 20.0 * gust_function(t), 1e-12) << t;
+  }
+  // 20 s: the same curve, ten times slower — at 10·t it blows as the printed one did at t.
+  p.gust_period_s = 20.0;
+  const Wind slow(p, 1);
+  for (const double t : {0.02, 0.06, 0.37, 1.5}) {
+    EXPECT_NEAR(slow.uniform_at(10.0 * t).x, printed.uniform_at(t).x, 1e-9) << t;
+  }
+  // The whole pattern repeats after one period, as eq. 5 does after 2 s.
+  EXPECT_NEAR(slow.uniform_at(3.7 + 20.0).x, slow.uniform_at(3.7).x, 1e-9);
+  EXPECT_NEAR(gust_function(0.37 + kGustFunctionPeriodS), gust_function(0.37), 1e-12);
 }
 
 TEST(Wind, TurbulenceHasTheRequestedRmsAndNoDivergence) {

