@@ -9,6 +9,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "cli/command.h"
 #include "cli/exit_codes.h"
@@ -16,6 +17,7 @@
 #include "compare/report_html.h"
 #include "compare/report_json.h"
 #include "compare/report_table.h"
+#include "film/display_transform.h"
 
 namespace raintrace::cli {
 
@@ -25,6 +27,11 @@ struct CompareArgs {
   std::string a, b, json, html, diff;
   compare::Thresholds thresholds;
   int threads = 2;
+  bool hdr = false;
+  bool linear = false;
+  double exposure_ev = 0.0;
+  std::string view = "filmic";
+  std::string look = "medium-high-contrast";
 };
 
 constexpr const char* kFooter = R"(
@@ -39,14 +46,31 @@ Metrics: mean/max absolute error, RMSE, PSNR = 20 log10(1/RMSE), SSIM of Rec.709
 NaN or Inf against any other value is an infinite error: it fails and warns whatever the
 thresholds, mean error, RMSE, PSNR and SSIM read nan or inf (null in --json), and the pixels
 are counted ("N pixel(s) hold NaN or Inf"); NaN against NaN, or the same Inf, counts as equal.
-Folders are matched by file name; a frame on one side only counts as a failure.
+Folders are matched by file name without extension (frame_0001.png meets frame_0001.exr); a
+frame on one side only counts as a failure. A folder holding both an EXR and a PNG of a frame
+(a render's images/) gives its PNG, or with --hdr its EXR.
+HDR input (OpenEXR, HDR: scene-linear light) is developed before it is compared, so values,
+thresholds and metrics stay those of the picture a viewer sees (1/255 = one 8-bit step):
+against a PNG raintrace developed, exactly as that PNG's description says ("is this PNG its EXR
+developed?": within half a step of rounding); otherwise with the curve alone (--exposure-ev,
+--view, --look; no bloom, grain or vignetting). --linear compares scene-linear values as
+stored instead: thresholds are then in linear units (--fail-relative suits them), and PSNR and
+SSIM, which assume a peak of 1, are not computed ("-"; null in --json).
 Exit codes: 0 all pass or warn, 1 any fail or missing frame, 2 unusable input.
-Example: raintrace compare tests/reference/default out/default/images --fail 0.02 --fail-percent 1)";
+Examples:
+  raintrace compare tests/reference/default out/default/images --fail 0.02 --fail-percent 1
+  raintrace compare old/images new/images --hdr --exposure-ev -1   # the EXRs, developed
+  raintrace compare a.exr b.exr --linear --fail 0 --fail-relative 0.01)";
 
 int run_compare(const CompareArgs& args) {
   compare::CompareOptions options;
   options.thresholds = args.thresholds;
   options.threads = args.threads;
+  options.prefer_hdr = args.hdr;
+  options.hdr.linear = args.linear;
+  options.hdr.curve.exposure_ev = args.exposure_ev;
+  options.hdr.curve.view = *film::parse_view(args.view);  // CLI checked the names
+  options.hdr.curve.look = *film::parse_look(args.look);
   options.diff_dir = args.diff;
   if (!args.html.empty()) options.assets_dir = compare::html_assets_dir(args.html);
   const compare::CompareReport report = compare::compare_paths(args.a, args.b, options);
@@ -98,6 +122,20 @@ Command register_compare_command(CLI::App& app) {
   sub->add_option("--diff", args->diff, "Write a heat-map difference PNG per frame into DIR");
   sub->add_option("--threads", args->threads, "Frames compared at once (default 2)")
       ->check(CLI::Range(1, 256));
+  sub->add_flag("--hdr", args->hdr,
+                "Folders: compare a frame's EXR, not its PNG, where a folder holds both");
+  sub->add_flag("--linear", args->linear,
+                "Compare HDR values as stored (scene-linear) instead of developing them");
+  sub->add_option("--exposure-ev", args->exposure_ev,
+                  "Exposure HDR input is developed with, in stops (default 0)")
+      ->check(CLI::Range(-16.0, 16.0));
+  const std::vector<std::string> views(std::begin(film::kViewNames), std::end(film::kViewNames));
+  const std::vector<std::string> looks(std::begin(film::kLookNames), std::end(film::kLookNames));
+  sub->add_option("--view", args->view, "View HDR input is developed with (default filmic)")
+      ->check(CLI::IsMember(views));
+  sub->add_option("--look", args->look,
+                  "Filmic look HDR input is developed with (default medium-high-contrast)")
+      ->check(CLI::IsMember(looks));
   return {sub, [args] { return run_compare(*args); }};
 }
 

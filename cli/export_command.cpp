@@ -38,8 +38,7 @@ int run_export(const ExportArgs& args) {
   check_run_budget(to_export, {range.first, range.last}, 0, args.limits);
   StopSignals signals;
   output::ClaimNote note;
-  auto folder = output::FolderState::claim(args.out, output::identity_of(scene.text, to_export),
-                                           args.force, this_command(), &note);
+  auto folder = claim_folder(args.out, scene, to_export, args.force, &note);
   if (!note.text.empty()) fmt::print(stderr, "export: {}\n", note.text);
   const bool terminal = isatty(fileno(stderr)) != 0;
   fmt::print(stderr, "export: {} frames {}-{} of {} to {}\n", args.scene, range.first, range.last,

@@ -21,6 +21,16 @@ output::SceneToExport scene_to_export(const Scene& scene) {
   return e;
 }
 
+output::FolderState claim_folder(const std::filesystem::path& out, const Scene& scene,
+                                 const output::SceneToExport& to_export, bool force,
+                                 output::ClaimNote* note) {
+  auto folder =
+      output::FolderState::claim(out, output::identity_of(canonical_scene_text(scene), to_export),
+                                 force, this_command(), note);
+  folder.set_develop({scene.develop, scene.look.camera.fov_deg});
+  return folder;
+}
+
 void add_limit_options(CLI::App& command, LimitArgs& limits) {
   command.add_option("--max-memory", limits.max_memory,
                      "Most memory the run may need, e.g. 8G (default: 4G, or half of this "

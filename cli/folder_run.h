@@ -31,6 +31,13 @@ void check_run_budget(const output::SceneToExport& scene, output::FrameSpan rang
 /// The scene as output::export_frames takes it.
 output::SceneToExport scene_to_export(const Scene& scene);
 
+/// Claims `out` for the scene (output::FolderState::claim with the identity of the scene's
+/// canonical form, canonical_scene_text) and records how its frames are developed (the
+/// [camera] develop keys). `scene` is the scene as changed by command-line options.
+output::FolderState claim_folder(const std::filesystem::path& out, const Scene& scene,
+                                 const output::SceneToExport& to_export, bool force,
+                                 output::ClaimNote* note);
+
 /// This process's command line, shell-quoted ("raintrace render a.toml -o out"), for the lock
 /// record that tells a second run who holds the folder.
 std::string this_command();

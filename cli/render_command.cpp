@@ -193,6 +193,11 @@ class ExportThread {
 };
 
 void print_failure(const render::FrameFailure& f, const std::filesystem::path& out) {
+  if (f.in_develop) {
+    fmt::print(stderr, "raintrace: frame {}: developing its EXR failed: {}\n", f.frame,
+               f.summary());
+    return;
+  }
   fmt::print(stderr, "raintrace: {} {} failed: POV-Ray exited with code {}\n",
              f.pass == render::Pass::image ? "frame" : "mask of frame", f.frame, f.exit_code);
   fmt::print(stderr, "  command: {}\n", f.command);
@@ -257,8 +262,7 @@ RenderInput prepare(const RenderArgs& args, int povray_processes) {
   in.scene = scene_to_export(scene);
   check_run_budget(*in.scene, in.range, povray_processes, args.limits);
   output::ClaimNote note;
-  in.folder.emplace(output::FolderState::claim(args.out, output::identity_of(scene.text, *in.scene),
-                                               args.force, this_command(), &note));
+  in.folder.emplace(claim_folder(args.out, scene, *in.scene, args.force, &note));
   if (!note.text.empty()) fmt::print(stderr, "render: {}\n", note.text);
   return in;
 }
@@ -343,8 +347,10 @@ int run_render(const RenderArgs& args) {
                stop_signal_name(), p.done);
     return interrupted_exit_code();
   }
-  fmt::print(stderr, "render: {} frames rendered, {} up to date, {} failed in {:.1f} s\n", p.done,
-             p.skipped, p.failed, p.elapsed_seconds);
+  const std::string developed =
+      p.developed_only > 0 ? fmt::format("{} developed only, ", p.developed_only) : "";
+  fmt::print(stderr, "render: {} frames rendered, {}{} up to date, {} failed in {:.1f} s\n",
+             p.done - p.developed_only, developed, p.skipped, p.failed, p.elapsed_seconds);
 
   // The animation's outputs, from the frames whose images are verified now.
   render::AssemblyOptions options;

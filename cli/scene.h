@@ -7,6 +7,9 @@
 #include <string>
 #include <string_view>
 
+#include "film/develop.h"
+#include "film/exposure.h"
+#include "film/grain.h"
 #include "povgen/export_params.h"
 #include "sim/param_table.h"
 #include "sim/params.h"
@@ -28,12 +31,38 @@ struct Scene {
   int frames = 48;     ///< length of the animation
   sim::SimParams sim;  ///< camera is filled identically in sim and look
   povgen::ExportParams look;
+  /// How the rendered HDR frames are developed into PNGs ([camera] exposure_ev, view, look,
+  /// bloom, grain, vignette). Changing only these re-develops a folder without rendering it.
+  film::DevelopSettings develop;
 };
 
-/// Scene's own key; the others are in the tables of sim/ and povgen/ (scene_tables.h).
+/// Scene's own key; the others are in the tables of sim/, povgen/ and below (scene_tables.h).
 inline constexpr sim::Param<Scene> kSceneParams[] = {
     sim::integer("output", "frames", &Scene::frames, "frames", 1, 100000),
 };
+
+/// [camera]'s develop keys (film/develop.h gives each setting's contract). Their table sits
+/// here because film/ knows nothing of scene files.
+inline constexpr sim::Param<film::DevelopSettings> kDevelopParams[] = {
+    sim::number("camera", "exposure_ev", &film::DevelopSettings::exposure_ev, "stops",
+                sim::Range::closed(-film::kExposureLimitEv, film::kExposureLimitEv)),
+    sim::choice<&film::DevelopSettings::view>("camera", "view", film::kViewNames),
+    sim::choice<&film::DevelopSettings::look>("camera", "look", film::kLookNames),
+    sim::number("camera", "bloom", &film::DevelopSettings::bloom, "share of the light",
+                sim::Range::closed(0, 1)),
+    sim::number("camera", "grain", &film::DevelopSettings::grain, "RMS at mid-grey",
+                sim::Range::closed(0, film::kMaxGrain)),
+    sim::number("camera", "vignette", &film::DevelopSettings::vignette, "",
+                sim::Range::closed(0, 1)),
+};
+static_assert(sim::well_formed<film::DevelopSettings>(kDevelopParams));
+
+/// The scene as far as it shapes the rendered (HDR) frames, as text: every key of every table
+/// with its value as loaded (defaults included; comments, order and spelling of the file do not
+/// matter), except the keys that do not change a rendered frame or that the folder's identity
+/// holds apart: the develop keys above, `seed`, [output] frames, width, height, fps, quality and
+/// [export] mask. Its hash is the scene_hash of an output folder (docs/output-folder.md).
+std::string canonical_scene_text(const Scene& scene);
 
 /// Reads and validates a scene file. Throws SceneError (also for a missing/unreadable file).
 Scene load_scene_file(const std::filesystem::path& path);

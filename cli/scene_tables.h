@@ -31,6 +31,7 @@ void for_each_table(SceneType& scene, Visit&& visit) {
   visit(std::span<const sim::Param<sim::SimParams>>(sim::kSimParams), scene.sim);
   visit(std::span<const sim::Param<Scene>>(kSceneParams), scene);
   visit(std::span<const sim::Param<sim::Camera>>(sim::kCameraParams), scene.sim.camera);
+  visit(std::span<const sim::Param<film::DevelopSettings>>(kDevelopParams), scene.develop);
   visit(std::span<const sim::Param<sim::RainParams>>(sim::kRainParams), scene.sim.rain);
   visit(std::span<const sim::Param<sim::WindParams>>(sim::kWindParams), scene.sim.wind);
   visit(std::span<const sim::Param<sim::SplashParams>>(sim::kSplashParams), scene.sim.splashes);

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "compare/hdr_input.h"
 #include "compare/metrics.h"
 
 namespace raintrace::compare {
@@ -20,6 +21,11 @@ struct CompareOptions {
   /// Folder for the PNGs an HTML report shows ("<nnnn>_reference.png", "_candidate.png",
   /// "_diff.png", nnnn the frame's index); empty = none.
   std::filesystem::path assets_dir;
+  /// How scene-linear (HDR) images are compared (hdr_input.h).
+  HdrOptions hdr;
+  /// Folders holding a frame both as HDR (.exr, .hdr) and as a picture (.png, …) under one name:
+  /// false compares the pictures, true the HDR files (`--hdr`).
+  bool prefer_hdr = false;
 };
 
 enum class FrameStatus {
@@ -39,6 +45,8 @@ struct FrameResult {
   std::filesystem::path diff_image;  ///< the --diff file written, if any
   /// File names inside assets_dir (empty when not written): reference, candidate, difference.
   std::string asset_reference, asset_candidate, asset_diff;
+  /// How each side was developed before comparing (HdrInput::prepare); empty: as stored.
+  std::string developed_a, developed_b;
 
   /// True for a failed comparison or a frame present on one side only.
   bool failed() const;
@@ -57,7 +65,9 @@ struct CompareReport {
 };
 
 /// Compares a (reference) with b (candidate): two image files, or two folders whose image
-/// files (extensions OpenImageIO reads; hidden files skipped) are matched by name. Per-frame
+/// files (extensions OpenImageIO reads; hidden files skipped) are matched by name without the
+/// extension, so a.png meets a.exr; where a folder holds both an HDR file and a picture of one
+/// name, `prefer_hdr` picks which. Scene-linear input is compared as hdr_input.h says. Per-frame
 /// problems (unreadable file, different sizes) are recorded in the frame, not thrown, so one
 /// bad frame does not hide the others. Throws std::runtime_error when a path does not exist or
 /// one is a folder and the other a file, std::invalid_argument for bad options.

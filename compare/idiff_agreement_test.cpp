@@ -95,6 +95,7 @@ TEST_P(IdiffAgreement, RmsePsnrMeanMaxAndVerdictMatch) {
              unsigned(nchannels));
   // The same thresholds on both sides: 3/255 per value, 5 % of pixels may fail.
   CompareOptions options;
+  options.hdr.linear = true;  // idiff compares stored values: so do we, for EXR too
   options.thresholds.fail = 3.0 / 255.0 + 1e-4;
   options.thresholds.warn = 1.0 / 255.0 + 1e-4;
   options.thresholds.fail_percent = 5.0;
@@ -147,6 +148,7 @@ TEST(IdiffAgreementVerdict, FailPercentBoundaryAgrees) {
   ASSERT_TRUE(B.write(b.string()));
   for (double pct : {5.0, 4.0}) {
     CompareOptions options;
+    options.hdr.linear = true;  // idiff compares stored values
     options.thresholds.fail = 0.1;
     options.thresholds.warn = 0.1;
     options.thresholds.fail_percent = pct;

@@ -17,6 +17,11 @@ struct Image {
   /// Interleaved values, row-major from the top-left pixel: (y * width + x) * channels + c.
   /// 8/16-bit files are normalised to [0, 1] (value / 255 or / 65535), as OpenImageIO does.
   std::vector<float> pixels;
+  /// The file stores floating-point values (OpenEXR, HDR, float TIFF): scene-linear light, not
+  /// display values (hdr_input.h says how such images are compared).
+  bool scene_linear = false;
+  /// The file's ImageDescription, e.g. a developed PNG's "raintrace develop: …".
+  std::string description;
 
   Image() = default;
   Image(int w, int h, int c, float fill = 0.0f)

@@ -28,6 +28,8 @@ Image read_image(const std::filesystem::path& path) {
   }
   Image image(spec.width, spec.height, spec.nchannels);
   image.channel_names = spec.channelnames;
+  image.scene_linear = spec.format.is_floating_point();
+  image.description = spec.get_string_attribute("ImageDescription");
   if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data())) {
     throw std::runtime_error(
         fmt::format("cannot read image '{}': {}", path.string(), input->geterror()));

@@ -71,6 +71,9 @@ struct Metrics {
   /// and warns whatever the thresholds (an infinitely wrong value), and makes mean_error, rmse,
   /// psnr and ssim non-finite: nothing about such an image reads as "close".
   std::size_t nonfinite_pixels = 0;
+  /// False when scene-linear values were compared as stored (--linear): PSNR and SSIM assume
+  /// display values with a peak of 1, so they are not computed (null in JSON, "-" in tables).
+  bool display_metrics = true;
   Verdict verdict = Verdict::pass;
 };
 

@@ -112,8 +112,14 @@ std::string to_html(const CompareReport& report, const std::string& assets_href)
           "<tr><th>SSIM</th><td>{}</td><th>pixels over warn / fail</th><td>{} ({}%) / {} "
           "({}%)</td></tr></table>\n",
           num(m.mean_error), num(m.max_error), m.max_x, m.max_y, m.max_c, num(m.rmse),
-          num(m.psnr, "{:.2f}"), num(m.ssim, "{:.5f}"), m.warn_pixels,
+          m.display_metrics ? num(m.psnr, "{:.2f}") : "&ndash;",
+          m.display_metrics ? num(m.ssim, "{:.5f}") : "&ndash;", m.warn_pixels,
           num(m.warn_percent, "{:.3f}"), m.fail_pixels, num(m.fail_percent, "{:.3f}"));
+      for (const std::string* how : {&f.developed_a, &f.developed_b}) {
+        if (how->empty()) continue;
+        out += fmt::format("<p>{} is HDR, developed for comparison: <code>{}</code></p>\n",
+                           how == &f.developed_a ? "Reference" : "Candidate", html_escape(*how));
+      }
     } else if (f.status == FrameStatus::error) {
       out += fmt::format("<p>Error: {}</p>\n", html_escape(f.error));
     } else {

@@ -39,14 +39,18 @@ std::string to_json(const CompareReport& report) {
     frame["reference"] = f.a.empty() ? json(nullptr) : json(f.a.string());
     frame["candidate"] = f.b.empty() ? json(nullptr) : json(f.b.string());
     frame["result"] = f.verdict_string();
+    // How an HDR side was developed before comparing; null: compared as stored.
+    frame["reference_developed"] = f.developed_a.empty() ? json(nullptr) : json(f.developed_a);
+    frame["candidate_developed"] = f.developed_b.empty() ? json(nullptr) : json(f.developed_b);
     if (f.status == FrameStatus::compared) {
       const Metrics& m = f.metrics;
       frame["mean_error"] = number(m.mean_error);
       frame["max_error"] = number(m.max_error);
       frame["max_pixel"] = {{"x", m.max_x}, {"y", m.max_y}, {"channel", m.max_c}};
       frame["rmse"] = number(m.rmse);
-      frame["psnr"] = number(m.psnr);
-      frame["ssim"] = number(m.ssim);
+      // Not computed for scene-linear values compared as stored (--linear): null.
+      frame["psnr"] = m.display_metrics ? number(m.psnr) : json(nullptr);
+      frame["ssim"] = m.display_metrics ? number(m.ssim) : json(nullptr);
       frame["pixels"] = m.pixels;
       frame["warn_pixels"] = m.warn_pixels;
       frame["fail_pixels"] = m.fail_pixels;

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <string>
+#include <vector>
 
 namespace raintrace::compare {
 
@@ -29,10 +31,12 @@ std::string format_table(const CompareReport& report) {
     ++counts[verdict];
     if (f.status == FrameStatus::compared) {
       const Metrics& m = f.metrics;
-      out += fmt::format(
-          "{:<{}}  {:>10.4g} {:>10.4g} {:>10.4g} {:>8} {:>8.4f} {:>8.3f} {:>8.3f}  {}\n", f.name,
-          name_width, m.mean_error, m.max_error, m.rmse, psnr_text(m.psnr), m.ssim, m.warn_percent,
-          m.fail_percent, verdict);
+      out +=
+          fmt::format("{:<{}}  {:>10.4g} {:>10.4g} {:>10.4g} {:>8} {:>8} {:>8.3f} {:>8.3f}  {}\n",
+                      f.name, name_width, m.mean_error, m.max_error, m.rmse,
+                      m.display_metrics ? psnr_text(m.psnr) : "-",
+                      m.display_metrics ? fmt::format("{:.4f}", m.ssim) : "-", m.warn_percent,
+                      m.fail_percent, verdict);
     } else {
       const std::string why = f.status == FrameStatus::missing_a   ? "only in " + report.b.string()
                               : f.status == FrameStatus::missing_b ? "only in " + report.a.string()
@@ -45,6 +49,21 @@ std::string format_table(const CompareReport& report) {
       out += fmt::format("{}: {} pixel(s) hold NaN or Inf where the other image does not\n", f.name,
                          f.metrics.nonfinite_pixels);
     }
+  }
+  // How HDR input was developed, once per distinct way (usually one line for the whole run).
+  std::vector<std::string> ways;
+  for (const auto& f : report.frames) {
+    for (const std::string* how : {&f.developed_a, &f.developed_b}) {
+      if (!how->empty() && std::find(ways.begin(), ways.end(), *how) == ways.end()) {
+        ways.push_back(*how);
+      }
+    }
+  }
+  if (ways.size() == 1) {
+    out += fmt::format("HDR input developed for comparison: {}\n", ways.front());
+  } else if (ways.size() > 1) {
+    out += fmt::format("HDR input developed for comparison {} ways (--json names each)\n",
+                       ways.size());
   }
   const Thresholds& t = report.thresholds;
   out += fmt::format("{} frame(s): ", report.frames.size());

@@ -3,6 +3,9 @@
 
 #include <fmt/core.h>
 
+#include <charconv>
+#include <map>
+#include <sstream>
 #include <stdexcept>
 
 #include "film/bloom.h"
@@ -14,6 +17,8 @@
 namespace raintrace::film {
 
 namespace {
+
+constexpr const char* kDescribed = "raintrace develop:";
 
 void check_range(const char* name, double value, double lo, double hi) {
   if (!(value >= lo && value <= hi)) {
@@ -28,17 +33,59 @@ void validate(const DevelopSettings& settings) {
   check_range("bloom", settings.bloom, 0.0, 1.0);
   check_range("grain", settings.grain, 0.0, kMaxGrain);
   check_range("vignette", settings.vignette, 0.0, 1.0);
-  if (settings.view == View::standard && settings.look != Look::medium_contrast) {
-    throw std::invalid_argument(
-        fmt::format("look '{}' needs view 'filmic'", to_string(settings.look)));
-  }
 }
 
 std::string describe(const DevelopSettings& settings) {
-  return fmt::format(
-      "raintrace develop: exposure_ev={} view={} look={} bloom={} grain={} vignette={}",
-      settings.exposure_ev, to_string(settings.view), to_string(settings.look), settings.bloom,
-      settings.grain, settings.vignette);
+  const std::string look =
+      settings.view == View::filmic ? fmt::format(" look={}", to_string(settings.look)) : "";
+  return fmt::format("{} exposure_ev={} view={}{} bloom={} grain={} vignette={}", kDescribed,
+                     settings.exposure_ev, to_string(settings.view), look, settings.bloom,
+                     settings.grain, settings.vignette);
+}
+
+std::string describe(const DevelopSettings& settings, const FrameContext& frame) {
+  return fmt::format("{} fov_deg={} seed={} frame={}", describe(settings), frame.fov_deg,
+                     frame.seed, frame.frame);
+}
+
+std::optional<DevelopDescription> parse_description(std::string_view text) {
+  if (!text.starts_with(kDescribed)) return std::nullopt;
+  std::map<std::string, std::string, std::less<>> fields;
+  std::istringstream words{std::string{text.substr(std::string_view{kDescribed}.size())}};
+  std::string word;
+  while (words >> word) {
+    const auto eq = word.find('=');
+    if (eq == std::string::npos) return std::nullopt;
+    fields[word.substr(0, eq)] = word.substr(eq + 1);
+  }
+  const auto number = [&](const char* key, auto& out) {
+    const auto it = fields.find(key);
+    if (it == fields.end()) return false;
+    const char* end = it->second.data() + it->second.size();
+    return std::from_chars(it->second.data(), end, out).ptr == end;
+  };
+  DevelopDescription d;
+  DevelopSettings& s = d.settings;
+  const auto view = fields.contains("view") ? parse_view(fields["view"]) : std::nullopt;
+  if (!view) return std::nullopt;
+  s.view = *view;
+  if (s.view == View::filmic) {
+    const auto look = fields.contains("look") ? parse_look(fields["look"]) : std::nullopt;
+    if (!look) return std::nullopt;
+    s.look = *look;
+  }
+  if (!number("exposure_ev", s.exposure_ev) || !number("bloom", s.bloom) ||
+      !number("grain", s.grain) || !number("vignette", s.vignette) ||
+      !number("fov_deg", d.frame.fov_deg) || !number("seed", d.frame.seed) ||
+      !number("frame", d.frame.frame)) {
+    return std::nullopt;
+  }
+  try {
+    validate(s);
+  } catch (const std::invalid_argument&) {
+    return std::nullopt;
+  }
+  return d;
 }
 
 RgbImage develop(const RgbImage& linear, const DevelopSettings& settings, const FrameContext& frame,
@@ -57,7 +104,8 @@ void develop_file(const std::filesystem::path& hdr_in, const std::filesystem::pa
                   const DevelopSettings& settings, const FrameContext& frame,
                   const DisplayTransform& display) {
   validate(settings);
-  write_png(png_out, develop(read_rgb_image(hdr_in), settings, frame, display), describe(settings));
+  write_png(png_out, develop(read_rgb_image(hdr_in), settings, frame, display),
+            describe(settings, frame));
 }
 
 }  // namespace raintrace::film

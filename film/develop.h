@@ -14,7 +14,9 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "film/display_transform.h"
 #include "film/rgb_image.h"
@@ -27,8 +29,9 @@ struct DevelopSettings {
   double exposure_ev = 0.0;
   /// Display view. Default filmic.
   View view = View::filmic;
-  /// Filmic contrast look (filmic view only). Default medium_high_contrast: deeper shadows than
-  /// Filmic's base curve, which suits a night scene's mostly dark frame.
+  /// Filmic contrast look (filmic view only; the standard view ignores it). Default
+  /// medium_high_contrast: deeper shadows than Filmic's base curve, which suits a night scene's
+  /// mostly dark frame.
   Look look = Look::medium_high_contrast;
   /// Share of the light the lens scatters into glare, [0, 1] (see bloom.h). Default 0.04, in the
   /// range of measured veiling glare of photographic lenses (ISO 9358's veiling glare index is
@@ -50,13 +53,25 @@ struct FrameContext {
   std::int64_t frame = 1;  ///< the frame number, for grain
 };
 
-/// Throws std::invalid_argument naming the field when a setting is out of its range, or when a
-/// look other than medium-contrast is combined with the standard view.
+/// Throws std::invalid_argument naming the field when a setting is out of its range.
 void validate(const DevelopSettings& settings);
 
 /// One line recording the settings, e.g. "raintrace develop: exposure_ev=-1 view=filmic
-/// look=medium-high-contrast bloom=0.04 grain=0 vignette=0" (written into each PNG).
+/// look=medium-high-contrast bloom=0.04 grain=0 vignette=0" (no look with the standard view).
+/// Numbers in their shortest exact form, so parse_description() gives the same settings back.
 std::string describe(const DevelopSettings& settings);
+/// The same followed by the frame: "… fov_deg=60 seed=1 frame=16". develop_file() writes this
+/// into each PNG, so a PNG says exactly how to develop its EXR again.
+std::string describe(const DevelopSettings& settings, const FrameContext& frame);
+
+/// What a PNG's description says it was developed with.
+struct DevelopDescription {
+  DevelopSettings settings;
+  FrameContext frame;
+};
+/// Reads describe(settings, frame) back; nullopt for any other text (a PNG raintrace did not
+/// develop), a missing field, or a value out of range.
+std::optional<DevelopDescription> parse_description(std::string_view text);
 
 /// Scene-linear frame → display-encoded sRGB in [0, 1], each step as its header says.
 /// Deterministic: the same input, settings and context give the same bits on any thread count.
@@ -64,7 +79,7 @@ RgbImage develop(const RgbImage& linear, const DevelopSettings& settings, const 
                  const DisplayTransform& display);
 
 /// Reads an HDR frame (read_rgb_image), develops it and writes an 8-bit sRGB PNG (write_png,
-/// atomically, with describe(settings) as its description). The input file is not touched.
+/// atomically, with describe(settings, frame) as its description). The input file is not touched.
 /// Throws std::runtime_error naming the file on I/O errors, std::invalid_argument for settings.
 void develop_file(const std::filesystem::path& hdr_in, const std::filesystem::path& png_out,
                   const DevelopSettings& settings, const FrameContext& frame,

@@ -6,6 +6,7 @@
 #include <OpenImageIO/color.h>
 #include <algorithm>
 #include <array>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -15,31 +16,10 @@ namespace raintrace::film {
 
 namespace {
 
-constexpr std::array<std::pair<View, std::string_view>, 2> kViews{{
-    {View::filmic, "filmic"},
-    {View::standard, "standard"},
-}};
-
-/// Scene-file spelling and the configuration's look name.
-struct LookName {
-  Look look;
-  std::string_view token;
-  const char* ocio;
-};
-constexpr std::array<LookName, 7> kLooks{{
-    {Look::very_low_contrast, "very-low-contrast", "Very Low Contrast"},
-    {Look::low_contrast, "low-contrast", "Low Contrast"},
-    {Look::medium_low_contrast, "medium-low-contrast", "Medium Low Contrast"},
-    {Look::medium_contrast, "medium-contrast", "Medium Contrast"},
-    {Look::medium_high_contrast, "medium-high-contrast", "Medium High Contrast"},
-    {Look::high_contrast, "high-contrast", "High Contrast"},
-    {Look::very_high_contrast, "very-high-contrast", "Very High Contrast"},
-}};
-
-const LookName& entry(Look look) {
-  return *std::find_if(kLooks.begin(), kLooks.end(),
-                       [look](const LookName& e) { return e.look == look; });
-}
+/// The configuration's look names, in the order of Look (and kLookNames).
+constexpr std::array<const char*, std::size(kLookNames)> kOcioLooks{
+    "Very Low Contrast",    "Low Contrast",  "Medium Low Contrast", "Medium Contrast",
+    "Medium High Contrast", "High Contrast", "Very High Contrast"};
 
 /// The configuration's names this module relies on.
 constexpr const char* kLinear = "Linear";
@@ -49,23 +29,20 @@ const char* ocio_view(View view) { return view == View::filmic ? "Filmic" : "Sta
 
 }  // namespace
 
-std::string_view to_string(View view) {
-  return std::find_if(kViews.begin(), kViews.end(), [view](auto& e) { return e.first == view; })
-      ->second;
-}
+std::string_view to_string(View view) { return kViewNames[std::size_t(view)]; }
 
-std::string_view to_string(Look look) { return entry(look).token; }
+std::string_view to_string(Look look) { return kLookNames[std::size_t(look)]; }
 
 std::optional<View> parse_view(std::string_view text) {
-  for (const auto& [view, token] : kViews) {
-    if (token == text) return view;
+  for (std::size_t i = 0; i < std::size(kViewNames); ++i) {
+    if (kViewNames[i] == text) return View(i);
   }
   return std::nullopt;
 }
 
 std::optional<Look> parse_look(std::string_view text) {
-  for (const LookName& e : kLooks) {
-    if (e.token == text) return e.look;
+  for (std::size_t i = 0; i < std::size(kLookNames); ++i) {
+    if (kLookNames[i] == text) return Look(i);
   }
   return std::nullopt;
 }
@@ -75,7 +52,7 @@ struct DisplayTransform::Impl {
   /// One processor per view and per look, made once: OpenColorIO's CPU processors are
   /// immutable and may be applied from several threads at once.
   std::array<OIIO::ColorProcessorHandle, 2> views;
-  std::array<OIIO::ColorProcessorHandle, kLooks.size()> looks;
+  std::array<OIIO::ColorProcessorHandle, kOcioLooks.size()> looks;
 
   explicit Impl(const std::string& path) : config(path) {}
 };
@@ -112,21 +89,20 @@ DisplayTransform::DisplayTransform(const std::filesystem::path& config) {
   // from Linear to Linear, applied before the view: what Blender does (the look, then the view
   // with its looks bypassed). medium-contrast is Filmic's base curve: no transform at all.
   const std::vector<std::string> names = cc.getLookNames();
-  for (const LookName& e : kLooks) {
-    const bool known = std::find(names.begin(), names.end(), e.ocio) != names.end();
-    if (!known) need(nullptr, fmt::format("no look '{}'", e.ocio));
-    if (e.look == Look::medium_contrast) continue;
-    m_impl->looks[std::size_t(e.look)] =
-        need(cc.createLookTransform(e.ocio, kLinear, kLinear), fmt::format("look '{}'", e.ocio));
+  for (std::size_t i = 0; i < kOcioLooks.size(); ++i) {
+    const char* ocio = kOcioLooks[i];
+    const bool known = std::find(names.begin(), names.end(), ocio) != names.end();
+    if (!known) need(nullptr, fmt::format("no look '{}'", ocio));
+    if (Look(i) == Look::medium_contrast) continue;
+    m_impl->looks[i] =
+        need(cc.createLookTransform(ocio, kLinear, kLinear), fmt::format("look '{}'", ocio));
   }
 }
 
 DisplayTransform::~DisplayTransform() = default;
 
 RgbImage DisplayTransform::to_display(const RgbImage& linear, View view, Look look) const {
-  if (view == View::standard && look != Look::medium_contrast) {
-    throw std::invalid_argument(fmt::format("look '{}' needs the filmic view", to_string(look)));
-  }
+  if (view == View::standard) look = Look::medium_contrast;  // looks are Filmic's
   RgbImage out = linear;
   if (out.pixel_count() == 0) return out;
   // In place on our own buffer, on the calling thread (OpenColorIO's CPU path is per pixel, so
@@ -142,6 +118,24 @@ RgbImage DisplayTransform::to_display(const RgbImage& linear, View view, Look lo
   // value is in [0, 1] whatever the view.
   for (float& v : out.pixels) v = std::clamp(v, 0.0f, 1.0f);
   return out;
+}
+
+RgbImage DisplayTransform::response(View view, Look look) const {
+  constexpr std::array<float, 12> kLevels{0.0f, 1e-4f, 1e-3f, 0.01f, 0.05f, 0.18f,
+                                          0.5f, 1.0f,  2.0f,  4.0f,  16.0f, 100.0f};
+  constexpr int n = int(kLevels.size());
+  RgbImage probe(n * n, n);
+  for (int r = 0; r < n; ++r) {
+    for (int g = 0; g < n; ++g) {
+      for (int b = 0; b < n; ++b) {
+        const int x = r * n + g;
+        probe.at(x, b, 0) = kLevels[std::size_t(r)];
+        probe.at(x, b, 1) = kLevels[std::size_t(g)];
+        probe.at(x, b, 2) = kLevels[std::size_t(b)];
+      }
+    }
+  }
+  return to_display(probe, view, look);
 }
 
 }  // namespace raintrace::film

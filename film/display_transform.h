@@ -28,6 +28,8 @@ inline constexpr std::string_view kBlenderOcioConfig =
 
 /// The display view: Blender's "Filmic" or "Standard" (sRGB, clipped).
 enum class View { filmic, standard };
+/// Scene-file names of View, in the order of its values.
+inline constexpr std::string_view kViewNames[] = {"filmic", "standard"};
 
 /// Filmic's contrast looks, lowest to highest. medium_contrast is Filmic's own curve (no look
 /// applied); the others are Blender's looks of the same name.
@@ -40,6 +42,10 @@ enum class Look {
   high_contrast,
   very_high_contrast,
 };
+/// Scene-file names of Look, in the order of its values.
+inline constexpr std::string_view kLookNames[] = {
+    "very-low-contrast",    "low-contrast",  "medium-low-contrast", "medium-contrast",
+    "medium-high-contrast", "high-contrast", "very-high-contrast"};
 
 std::string_view to_string(View view);  ///< "filmic", "standard" (scene-file spelling)
 std::string_view to_string(Look look);  ///< "very-low-contrast" … "very-high-contrast"
@@ -62,9 +68,14 @@ class DisplayTransform {
   /// Scene-linear Rec. 709 values (the configuration's "Linear"; >= 0) → display-encoded sRGB
   /// in [0, 1], per pixel, on the calling thread, and deterministic (the same input gives the
   /// same output bits whatever OpenImageIO's thread setting). `look` applies to the Filmic view
-  /// only: with View::standard it must be Look::medium_contrast (throws std::invalid_argument
-  /// otherwise). Throws std::runtime_error if OpenColorIO fails.
+  /// only; View::standard ignores it. Throws std::runtime_error if OpenColorIO fails.
   RgbImage to_display(const RgbImage& linear, View view, Look look) const;
+
+  /// to_display() of a fixed set of inputs (every combination of 12 levels from 0 to 100 in
+  /// R, G and B: greys, colours, black and far beyond white). Whoever records what a picture
+  /// was developed with hashes this: another blender-data or OpenColorIO that would change the
+  /// pixels changes it too, without hashing 23 MB of LUT files.
+  RgbImage response(View view, Look look) const;
 
  private:
   struct Impl;

@@ -154,8 +154,9 @@ TEST_F(Filmic, StandardViewIsSrgbClippedAtWhite) {
     EXPECT_NEAR(display_of(*transform, float(x), View::standard), srgb(x), 2e-3) << x;
   }
   EXPECT_FLOAT_EQ(display_of(*transform, 4.0f, View::standard), 1.0f);
-  EXPECT_THROW(display_of(*transform, 0.5f, View::standard, Look::high_contrast),
-               std::invalid_argument);
+  // Looks are Filmic's: the standard view ignores them.
+  EXPECT_EQ(display_of(*transform, 0.5f, View::standard, Look::high_contrast),
+            display_of(*transform, 0.5f, View::standard));
 }
 
 TEST_F(Filmic, SameBitsWhateverOpenImageIosThreadSetting) {
@@ -171,6 +172,14 @@ TEST_F(Filmic, SameBitsWhateverOpenImageIosThreadSetting) {
   const RgbImage again = transform->to_display(frame, View::filmic, Look::high_contrast);
   EXPECT_EQ(one.pixels, two.pixels);
   EXPECT_EQ(one.pixels, again.pixels);
+}
+
+TEST_F(Filmic, ResponseTellsViewsAndLooksApartAndRepeats) {
+  const RgbImage filmic = transform->response(View::filmic, Look::medium_high_contrast);
+  EXPECT_EQ(filmic.pixel_count(), 12U * 12U * 12U);
+  EXPECT_EQ(transform->response(View::filmic, Look::medium_high_contrast).pixels, filmic.pixels);
+  EXPECT_NE(transform->response(View::filmic, Look::medium_contrast).pixels, filmic.pixels);
+  EXPECT_NE(transform->response(View::standard, Look::medium_contrast).pixels, filmic.pixels);
 }
 
 TEST(FilmicConfig, MissingConfigurationNamesTheDebianPackage) {

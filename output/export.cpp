@@ -23,9 +23,9 @@ int writer_threads(int requested) {
 
 }  // namespace
 
-FolderIdentity identity_of(std::string_view scene_text, const SceneToExport& scene) {
+FolderIdentity identity_of(std::string_view canonical_scene, const SceneToExport& scene) {
   FolderIdentity id;
-  id.scene_hash = povgen::content_hash(scene_text);
+  id.scene_hash = povgen::content_hash(canonical_scene);
   id.seed = scene.sim.seed;
   id.width = scene.look.width;
   id.height = scene.look.height;

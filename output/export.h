@@ -23,9 +23,10 @@ struct SceneToExport {
   std::filesystem::path scene_dir;  ///< resolves [environment] include
 };
 
-/// What a folder made from this scene is: the scene file's bytes hashed, and the settings a
-/// command line can change (seed, size, quality, masks) as they will be written.
-FolderIdentity identity_of(std::string_view scene_text, const SceneToExport& scene);
+/// What a folder made from this scene is: the hash of the scene's canonical text (cli's
+/// canonical_scene_text: every key that shapes the rendered frames, as loaded), and the settings
+/// a command line can change (seed, size, fps, quality, masks) as they will be written.
+FolderIdentity identity_of(std::string_view canonical_scene, const SceneToExport& scene);
 
 struct ExportProgress {
   int frames_done = 0;

@@ -70,13 +70,14 @@ void remove_file(const fs::path& dir, const std::string& relative) {
   fs::remove(dir / path, ignored);
 }
 
-// Removes the files the manifest records for a frame: its .pov files, its image and mask.
+// Removes the files the manifest records for a frame: its .pov files, its EXR, PNG and mask.
 void remove_frame_files(const fs::path& dir, const FrameEntry& f) {
   for (const PictureRecord* p : {&f.image, f.mask ? &*f.mask : nullptr}) {
     if (p == nullptr) continue;
     remove_file(dir, p->scene);
     remove_file(dir, p->path);
   }
+  remove_file(dir, f.developed.path);
 }
 
 // Removes every file the manifest records: frame files, pictures, movie and contact sheet.
@@ -87,6 +88,13 @@ int remove_recorded_files(const fs::path& dir, const Manifest& m) {
   return static_cast<int>(m.frames.size());
 }
 
+// A frame's develop record with nothing developed: only where its PNG goes.
+DevelopRecord fresh_develop_record(const std::string& path) {
+  DevelopRecord d;
+  d.path = path;
+  return d;
+}
+
 PictureRecord new_picture(Pass pass, int number, int digits) {
   PictureRecord p;
   p.scene = frame_scene_name(pass, number, digits);
@@ -95,6 +103,26 @@ PictureRecord new_picture(Pass pass, int number, int digits) {
 }
 
 }  // namespace
+
+const char* describe(DevelopReason reason) {
+  switch (reason) {
+    case DevelopReason::up_to_date:
+      return "up to date";
+    case DevelopReason::not_rendered:
+      return "not rendered";
+    case DevelopReason::new_frame:
+      return "not developed";
+    case DevelopReason::settings_changed:
+      return "develop settings changed";
+    case DevelopReason::failed_before:
+      return "develop failed before";
+    case DevelopReason::file_missing:
+      return "picture missing";
+    case DevelopReason::file_changed:
+      return "picture changed";
+  }
+  return "?";
+}
 
 const char* describe(RenderReason reason) {
   switch (reason) {
@@ -135,6 +163,13 @@ std::string RenderPlan::summary() const {
   std::string out = fmt::format("{} to render", to_render);
   if (!masks.empty()) out += fmt::format(" ({} images, {} masks)", images.size(), masks.size());
   if (!why.empty()) out += ": " + join(why, ", ");
+  if (!develops.empty()) {
+    std::vector<std::string> develop_why;
+    for (const auto& [reason, count] : develop_reasons) {
+      develop_why.push_back(fmt::format("{} {}", count, describe(reason)));
+    }
+    out += fmt::format("; {} to develop only: {}", develops.size(), join(develop_why, ", "));
+  }
   out += fmt::format("; {} frames up to date", up_to_date);
   const auto missing = reasons.find(RenderReason::not_exported);
   if (missing != reasons.end()) {
@@ -194,15 +229,27 @@ FolderState FolderState::claim(const fs::path& dir, const FolderIdentity& identi
     return start_anew(
         fmt::format("--force: replaced the unreadable {} of {}", kManifest, dir.string()));
   }
+  if (old.format < kFolderFormat) {
+    if (!force) {
+      throw FolderRefused(fmt::format(
+          "{} was made by an older raintrace (folder format {}: 8-bit PNG frames without EXR). "
+          "Use --force to replace its frames, or choose another output folder",
+          dir.string(), old.format));
+    }
+    const int removed = remove_recorded_files(dir, old);
+    return start_anew(fmt::format("--force: replaced {} frames of an older raintrace in {}",
+                                  removed, dir.string()));
+  }
   if (old.identity == identity) {
     FolderState state{std::move(lock), dir, std::move(old)};
     state.adopt_unhashed_pictures();
+    state.adopt_rendered_by_hand();
     return state;
   }
   const bool other_scene = old.identity.scene_hash != identity.scene_hash;
   const std::string what =
       other_scene
-          ? fmt::format("another scene (scene file hash {} there, {} here)",
+          ? fmt::format("another scene (scene hash {} there, {} here)",
                         short_hash(old.identity.scene_hash), short_hash(identity.scene_hash))
           : fmt::format("this scene with other settings ({})",
                         join(differences(old.identity, identity), ", "));
@@ -238,8 +285,15 @@ FolderState FolderState::open(const fs::path& dir, const std::string& command) {
     throw FolderRefused(
         fmt::format("{}: raintrace cannot use this folder: {}", dir.string(), e.what()));
   }
+  if (m.format < kFolderFormat) {
+    throw FolderRefused(fmt::format(
+        "{} was made by an older raintrace (folder format {}: 8-bit PNG frames without EXR): "
+        "render its scene file into it with --force, or into another folder",
+        dir.string(), m.format));
+  }
   FolderState state{std::move(lock), dir, std::move(m)};
   state.adopt_unhashed_pictures();
+  state.adopt_rendered_by_hand();
   return state;
 }
 
@@ -259,6 +313,48 @@ void FolderState::adopt_unhashed_pictures() {
       } else {
         p->status = FrameStatus::exported;
       }
+      changed = true;
+    }
+  }
+  if (changed) save();
+}
+
+void FolderState::adopt_rendered_by_hand() {
+  // What every frame's render reads besides its own .pov files (povgen::write_shared_files).
+  constexpr const char* kShared[] = {"scene.ini",
+                                     "scene.pov",
+                                     "scene.inc",
+                                     "environment.inc",
+                                     "raintrace_materials.inc",
+                                     "textures/streak_atlas.png",
+                                     "mask.ini",
+                                     "mask.pov"};
+  const auto mtime = [this](const std::string& relative) {
+    std::error_code error;
+    const auto t = fs::last_write_time(m_dir / relative, error);
+    return error ? fs::file_time_type::min() : t;
+  };
+  auto inputs = fs::file_time_type::min();
+  for (const char* name : kShared) inputs = std::max(inputs, mtime(name));
+  bool changed = false;
+  for (FrameEntry& f : m_manifest.frames) {
+    if (f.input_hash.empty()) continue;
+    for (PictureRecord* p : {&f.image, f.mask ? &*f.mask : nullptr}) {
+      if (p == nullptr || p->status == FrameStatus::rendered) continue;
+      std::error_code error;
+      const auto written = fs::last_write_time(m_dir / p->path, error);
+      if (error) continue;
+      const auto newest_input = std::max({inputs, mtime(f.image.scene), mtime(p->scene)});
+      if (written <= newest_input) continue;  // older than what it should show
+      const auto& id = m_manifest.identity;
+      const auto facts = file_facts(m_dir / p->path);
+      if (!facts || !image_is_complete(m_dir / p->path, id.width, id.height)) continue;
+      p->status = FrameStatus::rendered;
+      p->rendered_hash = f.input_hash;
+      p->size = facts->size;
+      p->file_hash = facts->hash;
+      p->seconds = 0.0;
+      p->error.clear();
       changed = true;
     }
   }
@@ -305,6 +401,7 @@ void FolderState::begin_export(const std::string& shared_hash, FrameSpan range, 
     FrameEntry f;
     f.number = n;
     f.image = new_picture(Pass::image, n, digits);
+    f.developed.path = developed_image_name(n, digits);
     if (m_manifest.identity.masks) f.mask = new_picture(Pass::mask, n, digits);
     frames.push_back(std::move(f));
   }
@@ -344,6 +441,10 @@ void FolderState::rendered(Pass pass, int number, double seconds) {
     p->file_hash = facts->hash;
     p->seconds = seconds;
     p->error.clear();
+    DevelopRecord& d = find_mutable(number)->developed;
+    if (pass == Pass::image && d.source_hash != facts->hash) {
+      d = fresh_develop_record(d.path);  // a PNG of another EXR is no PNG of this one
+    }
   }
   save();
 }
@@ -357,6 +458,58 @@ void FolderState::failed(Pass pass, int number, const std::string& error) {
   p->file_hash.clear();
   p->error = error;
   save();
+}
+
+void FolderState::set_develop(const DevelopSpec& spec) {
+  m_manifest.develop = spec;
+  save();
+}
+
+void FolderState::set_develop_hash(std::string hash) { m_develop_hash = std::move(hash); }
+
+void FolderState::developed(int number, double seconds) {
+  FrameEntry* f = find_mutable(number);
+  if (f == nullptr) return;
+  DevelopRecord& d = f->developed;
+  const auto facts = file_facts(m_dir / d.path);
+  if (!facts) {
+    develop_failed(number, d.path + " vanished after it was developed");
+    return;
+  }
+  d.develop_hash = m_develop_hash;
+  d.source_hash = f->image.file_hash;
+  d.size = facts->size;
+  d.file_hash = facts->hash;
+  d.seconds = seconds;
+  d.error.clear();
+  save();
+}
+
+void FolderState::develop_failed(int number, const std::string& error) {
+  FrameEntry* f = find_mutable(number);
+  if (f == nullptr) return;
+  f->developed = fresh_develop_record(f->developed.path);
+  f->developed.error = error;
+  save();
+}
+
+DevelopReason FolderState::decide_develop(int number) const {
+  return decide_develop(number, decide(Pass::image, number, false));
+}
+
+DevelopReason FolderState::decide_develop(int number, RenderReason image) const {
+  const FrameEntry* f = find(number);
+  if (f == nullptr || image != RenderReason::up_to_date) return DevelopReason::not_rendered;
+  const DevelopRecord& d = f->developed;
+  if (d.develop_hash.empty()) {
+    return d.error.empty() ? DevelopReason::new_frame : DevelopReason::failed_before;
+  }
+  if (d.source_hash != f->image.file_hash) return DevelopReason::new_frame;
+  if (d.develop_hash != m_develop_hash) return DevelopReason::settings_changed;
+  const auto facts = file_facts(m_dir / d.path);
+  if (!facts) return DevelopReason::file_missing;
+  if (facts->size != d.size || facts->hash != d.file_hash) return DevelopReason::file_changed;
+  return DevelopReason::up_to_date;
 }
 
 RenderReason FolderState::decide(Pass pass, int number, bool force) const {
@@ -395,6 +548,12 @@ RenderPlan FolderState::plan(const RenderRequest& request) const {
     const RenderReason image = decide(Pass::image, f.number, request.force);
     ++plan.reasons[image];
     if (needs_render(image)) plan.images.push_back(f.number);
+    const DevelopReason develop = decide_develop(f.number, image);
+    const bool develop_only = needs_develop(develop);
+    if (develop_only) {
+      plan.develops.push_back(f.number);
+      ++plan.develop_reasons[develop];
+    }
     bool mask_to_render = false;
     if (f.mask) {
       const RenderReason mask = decide(Pass::mask, f.number, request.force);
@@ -402,7 +561,7 @@ RenderPlan FolderState::plan(const RenderRequest& request) const {
       mask_to_render = needs_render(mask);
       if (mask_to_render) plan.masks.push_back(f.number);
     }
-    if (image == RenderReason::up_to_date && !mask_to_render) ++plan.up_to_date;
+    if (image == RenderReason::up_to_date && !develop_only && !mask_to_render) ++plan.up_to_date;
   }
   return plan;
 }
@@ -410,9 +569,7 @@ RenderPlan FolderState::plan(const RenderRequest& request) const {
 std::vector<int> FolderState::verified_frames() const {
   std::vector<int> frames;
   for (const FrameEntry& f : m_manifest.frames) {
-    if (decide(Pass::image, f.number, false) == RenderReason::up_to_date) {
-      frames.push_back(f.number);
-    }
+    if (decide_develop(f.number) == DevelopReason::up_to_date) frames.push_back(f.number);
   }
   return frames;
 }
@@ -429,11 +586,21 @@ void FolderState::set_contact_sheet_source(const std::string& key) {
   save();
 }
 
+std::string develop_hash(const DevelopSpec& spec, std::uint64_t seed,
+                         const film::RgbImage& response) {
+  povgen::ContentHasher hasher;
+  hasher.update(
+      fmt::format("{} fov_deg={} seed={}\n", film::describe(spec.settings), spec.fov_deg, seed));
+  hasher.update(std::string_view{reinterpret_cast<const char*>(response.pixels.data()),
+                                 response.pixels.size() * sizeof(float)});
+  return hasher.hex();
+}
+
 std::string assembly_key(const FolderState& folder, const std::vector<int>& frames) {
   povgen::ContentHasher hasher;
   for (const int n : frames) {
     const FrameEntry* f = folder.find(n);
-    hasher.update(fmt::format("{}:{};", n, f != nullptr ? f->image.file_hash : ""));
+    hasher.update(fmt::format("{}:{};", n, f != nullptr ? f->developed.file_hash : ""));
   }
   return hasher.hex();
 }

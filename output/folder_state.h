@@ -1,15 +1,22 @@
 // The one owner of an output folder's state. A run gets a FolderState by claiming the folder
 // (export, render of a scene file) or opening it (render of an exported folder); either takes
 // the folder's lock first (folder_lock.h) and decides whether this run may use the folder at
-// all. From then on every change to manifest.json goes through this class: the export's and the
-// renderers' transitions, and the one rule for whether a picture is up to date:
+// all. From then on every change to manifest.json goes through this class: the export's, the
+// renderers' and develop's transitions, and the one rule for whether a picture is up to date:
 //
-//   up to date  ⇔  the frame is exported (input_hash known), its picture was rendered from that
-//                  input_hash, and the file on disk has the size and content hash recorded then.
+//   rendered    ⇔  the frame is exported (input_hash known), its picture (EXR, or mask) was
+//                  rendered from that input_hash, and the file on disk has the size and content
+//                  hash recorded then;
+//   developed   ⇔  its EXR is rendered, and its PNG was developed from that EXR's recorded bytes
+//                  with this run's develop hash (develop_hash(): the [camera] develop keys, the
+//                  field of view, the seed and the display transform's response), and the PNG
+//                  has the size and content hash recorded then;
+//   up to date  ⇔  rendered and developed (and its mask rendered, with masks).
 //
-// Everything else is rendered again, and the plan says why (new, inputs changed, interrupted,
-// failed before, file missing/truncated/changed, forced). The movie and contact sheet are made
-// only from frames that pass this rule at the time.
+// Everything else is rendered or developed again, and the plan says why (new, inputs changed,
+// interrupted, failed before, file missing/truncated/changed, develop settings changed, forced).
+// A frame whose EXR is current is never rendered again for its PNG. The movie and contact sheet
+// are made only from frames that are up to date at the time.
 //
 // Not thread-safe: one thread at a time (the local renderer takes exported frames from the
 // exporter's thread through render::FrameFeed, and applies them here on its own).
@@ -58,6 +65,25 @@ constexpr bool needs_render(RenderReason reason) {
   return reason != RenderReason::up_to_date && reason != RenderReason::not_exported;
 }
 
+/// Why a frame's PNG is, or is not, developed in this run (its EXR being rendered).
+enum class DevelopReason {
+  up_to_date,        ///< nothing to do
+  not_rendered,      ///< the EXR is not up to date: developed once it is rendered
+  new_frame,         ///< rendered, never developed from this EXR
+  settings_changed,  ///< developed with another develop hash (settings, view, transform)
+  failed_before,     ///< develop failed on it in an earlier run
+  file_missing,      ///< recorded as developed, but the PNG is gone
+  file_changed,      ///< other bytes than recorded (truncated, empty or edited)
+};
+
+/// "not developed", "develop settings changed", "picture missing", …
+const char* describe(DevelopReason reason);
+
+/// Whether a reason means develop has to run on a current EXR.
+constexpr bool needs_develop(DevelopReason reason) {
+  return reason != DevelopReason::up_to_date && reason != DevelopReason::not_rendered;
+}
+
 struct RenderRequest {
   bool force = false;             ///< render every exported picture again
   std::optional<FrameSpan> only;  ///< consider these frames only
@@ -65,13 +91,17 @@ struct RenderRequest {
 
 /// What a run renders, and what it leaves and why.
 struct RenderPlan {
-  std::vector<int> images;  ///< frames whose image is rendered, ascending
-  std::vector<int> masks;   ///< frames whose mask is rendered (folders exported with masks)
-  int frames = 0;           ///< frames considered
-  int up_to_date = 0;       ///< frames with nothing to render
+  std::vector<int> images;    ///< frames whose EXR is rendered (and then developed), ascending
+  std::vector<int> masks;     ///< frames whose mask is rendered (folders exported with masks)
+  std::vector<int> develops;  ///< frames whose EXR is current and whose PNG is developed again
+  int frames = 0;             ///< frames considered
+  int up_to_date = 0;         ///< frames with nothing to render or develop
   /// Pictures (images and masks) by reason, including up_to_date and not_exported.
   std::map<RenderReason, int> reasons;
-  /// "3 images to render (2 new, 1 image truncated), 20 frames up to date, 1 not exported".
+  /// Frames to develop without rendering, by reason.
+  std::map<DevelopReason, int> develop_reasons;
+  /// "3 to render: 2 new, 1 image truncated; 5 to develop: 5 develop settings changed; 20 frames
+  /// up to date".
   [[nodiscard]] std::string summary() const;
 };
 
@@ -87,8 +117,9 @@ class FolderState {
   /// takes its lock (FolderBusy) and checks what is there:
   ///   - nothing (or only a lock file): a new folder, marked as raintrace's at once;
   ///   - a manifest of the same identity: resumed as it is;
-  ///   - a manifest of another identity (other scene file, seed, size, fps, quality or masks),
-  ///     or files but no raintrace manifest: FolderRefused, unless `force`. With force, every
+  ///   - a manifest of another identity (another scene, seed, size, fps, quality or masks), of
+  ///     an older folder format, or files but no raintrace manifest: FolderRefused, unless
+  ///     `force`. With force, every
   ///     file the old manifest records (frame files, images, masks, movie, contact sheet, plate,
   ///     logs) is removed and the folder starts anew; files it does not record are never
   ///     touched (in a folder raintrace did not make, same-named files get overwritten).
@@ -96,8 +127,15 @@ class FolderState {
   static FolderState claim(const std::filesystem::path& dir, const FolderIdentity& identity,
                            bool force, const std::string& command, ClaimNote* note = nullptr);
 
+  /// Both claim() (when it resumes) and open() adopt pictures rendered by hand: a frame's
+  /// picture that POV-Ray wrote at its final name outside raintrace (`povray scene.ini` in the
+  /// folder, on a farm) counts as rendered when it decodes completely at the frame size and is
+  /// newer than every file POV-Ray read for it (the frame's .pov files and the shared files:
+  /// make's rule). Its PNG is then developed like any other.
+  ///
   /// For a run that renders an already exported folder: takes the lock (FolderBusy) and reads
-  /// the manifest. Throws FolderRefused when dir holds no raintrace manifest.
+  /// the manifest. Throws FolderRefused when dir holds no raintrace manifest, or one of an older
+  /// folder format.
   static FolderState open(const std::filesystem::path& dir, const std::string& command);
 
   // --- Export transitions ------------------------------------------------------------------
@@ -123,17 +161,34 @@ class FolderState {
   /// POV-Ray did not make it; `error` is one line. Saves.
   void failed(Pass pass, int number, const std::string& error);
 
+  // --- Develop ---------------------------------------------------------------------------------
+
+  /// Records how the frames are developed (the scene's [camera] develop keys). PNGs developed
+  /// otherwise stop being current once set_develop_hash() gives the new hash. Saves.
+  void set_develop(const DevelopSpec& spec);
+  /// The develop hash of this run (develop_hash() of the manifest's DevelopSpec): what a PNG
+  /// must have been developed with to be current. Until it is set, no PNG is current.
+  void set_develop_hash(std::string hash);
+  [[nodiscard]] const std::string& develop_hash() const { return m_develop_hash; }
+  /// The frame's PNG is at developed_image_name(), verified complete, developed from the EXR
+  /// now recorded with this run's develop hash: records its size and content hash. Saves.
+  void developed(int number, double seconds);
+  /// Develop failed on it; `error` is one line. Saves.
+  void develop_failed(int number, const std::string& error);
+
   // --- Decisions -----------------------------------------------------------------------------
 
   /// The rule above for one picture (reads the file to check it; decodes it only when its bytes
   /// are not the recorded ones, to tell truncated from changed). A frame or mask the manifest
   /// does not have is not_exported.
   [[nodiscard]] RenderReason decide(Pass pass, int number, bool force) const;
+  /// The develop rule for the frame's PNG (reads the PNG to check it).
+  [[nodiscard]] DevelopReason decide_develop(int number) const;
   /// decide() over the frames in request.only (all when unset), images and, for a folder
-  /// exported with masks, masks.
+  /// exported with masks, masks; decide_develop() for frames whose EXR stays.
   [[nodiscard]] RenderPlan plan(const RenderRequest& request) const;
-  /// Frames whose image is up to date right now, ascending: what the movie and contact sheet
-  /// may show.
+  /// Frames that are rendered and developed right now, ascending: what the movie and contact
+  /// sheet may show.
   [[nodiscard]] std::vector<int> verified_frames() const;
 
   /// Writes manifest.json (std::system_error with the reason when it cannot).
@@ -156,13 +211,21 @@ class FolderState {
   FrameEntry* find_mutable(int number);
   PictureRecord* picture(Pass pass, int number);
   void adopt_unhashed_pictures();
+  void adopt_rendered_by_hand();
+  DevelopReason decide_develop(int number, RenderReason image) const;
 
   FolderLock m_lock;
   std::filesystem::path m_dir;
   Manifest m_manifest;
+  std::string m_develop_hash;
 };
 
-/// A key for a set of verified frames: their numbers and their files' content hashes. The
+/// The develop hash: the settings and field of view of `spec`, the seed, and `response` (the
+/// display transform's film::DisplayTransform::response() for the spec's view and look).
+std::string develop_hash(const DevelopSpec& spec, std::uint64_t seed,
+                         const film::RgbImage& response);
+
+/// A key for a set of verified frames: their numbers and their PNGs' content hashes. The
 /// manifest keeps the key the movie and the contact sheet were made from, so they are made
 /// again exactly when the frames they show changed.
 std::string assembly_key(const FolderState& folder, const std::vector<int>& frames);

@@ -53,6 +53,15 @@ void export_and_render(FolderState& folder, int frames, const std::string& share
   }
 }
 
+// Develops every frame as render/ does: the PNG at its final name, then the transition.
+void develop_all(FolderState& folder, int frames, const std::string& hash = "develop-a") {
+  folder.set_develop_hash(hash);
+  for (int n = 1; n <= frames; ++n) {
+    write(folder.dir() / developed_image_name(n), "png bytes of frame " + std::to_string(n));
+    folder.developed(n, 0.1);
+  }
+}
+
 TEST(FolderClaim, ANewFolderIsCreatedAndMarkedAsRaintracesAtOnce) {
   const auto dir = testing::fresh_test_dir("claim_new") / "a" / "b";
   {
@@ -175,6 +184,7 @@ TEST(UpToDateRule, ARenderedImageIsUpToDateOnlyWhileItsBytesAreTheRecordedOnes) 
   const auto dir = testing::fresh_test_dir("rule_bytes");
   auto folder = FolderState::claim(dir, identity(), false, "test");
   export_and_render(folder, 5);
+  develop_all(folder, 5);
   for (int n = 1; n <= 5; ++n)
     EXPECT_EQ(folder.decide(Pass::image, n, false), RenderReason::up_to_date);
   const auto image = [&](int n) { return dir / final_image_name(Pass::image, n); };
@@ -244,15 +254,113 @@ TEST(UpToDateRule, ChangedSharedFilesLeaveTheFramesOutsideTheRangeUnexported) {
   EXPECT_TRUE(folder.verified_frames().empty());
 }
 
+TEST(DevelopRule, APngIsCurrentOnlyForItsExrTheRunsDevelopHashAndItsRecordedBytes) {
+  const auto dir = testing::fresh_test_dir("develop_rule");
+  auto folder = FolderState::claim(dir, identity(), false, "test");
+  export_and_render(folder, 6);
+  folder.set_develop_hash("develop-a");
+  for (int n = 1; n <= 6; ++n) EXPECT_EQ(folder.decide_develop(n), DevelopReason::new_frame);
+  EXPECT_TRUE(folder.verified_frames().empty());  // an EXR alone is not a finished frame
+  develop_all(folder, 6);
+  EXPECT_EQ(folder.verified_frames(), (std::vector<int>{1, 2, 3, 4, 5, 6}));
+  const auto png = [&](int n) { return dir / developed_image_name(n); };
+  fs::remove(png(1));
+  write(png(2), "edited");
+  folder.develop_failed(3, "cannot write images/.tmp/frame_0003.png: No space left on device");
+  // Frame 4 rendered again: its PNG no longer shows its EXR.
+  write(dir / final_image_name(Pass::image, 4), "another EXR");
+  folder.rendered(Pass::image, 4, 0.5);
+  // Frame 5's EXR is gone: it renders again, and develops after.
+  fs::remove(dir / final_image_name(Pass::image, 5));
+  EXPECT_EQ(folder.decide_develop(1), DevelopReason::file_missing);
+  EXPECT_EQ(folder.decide_develop(2), DevelopReason::file_changed);
+  EXPECT_EQ(folder.decide_develop(3), DevelopReason::failed_before);
+  EXPECT_EQ(folder.decide_develop(4), DevelopReason::new_frame);
+  EXPECT_EQ(folder.decide_develop(5), DevelopReason::not_rendered);
+  EXPECT_EQ(folder.decide_develop(6), DevelopReason::up_to_date);
+  const auto plan = folder.plan({});
+  EXPECT_EQ(plan.images, std::vector<int>{5});
+  EXPECT_EQ(plan.develops, (std::vector<int>{1, 2, 3, 4}));
+  EXPECT_EQ(plan.up_to_date, 1);
+  EXPECT_EQ(plan.summary(),
+            "1 to render: 1 image missing; 4 to develop only: 1 not developed, 1 develop failed "
+            "before, 1 picture missing, 1 picture changed; 1 frames up to date");
+  EXPECT_EQ(read_manifest(dir / kManifest).frames[2].developed.error,
+            "cannot write images/.tmp/frame_0003.png: No space left on device");
+}
+
+TEST(DevelopRule, OtherDevelopSettingsRedevelopEveryFrameAndRenderNone) {
+  const auto dir = testing::fresh_test_dir("develop_settings");
+  auto folder = FolderState::claim(dir, identity(), false, "test");
+  export_and_render(folder, 3);
+  develop_all(folder, 3, "exposure 0");
+  // The next run develops with other settings: a new develop hash.
+  folder.set_develop_hash("exposure -1");
+  const auto plan = folder.plan({});
+  EXPECT_TRUE(plan.images.empty());
+  EXPECT_EQ(plan.develops, (std::vector<int>{1, 2, 3}));
+  EXPECT_EQ(plan.develop_reasons.at(DevelopReason::settings_changed), 3);
+  EXPECT_TRUE(folder.verified_frames().empty());
+  develop_all(folder, 3, "exposure -1");
+  EXPECT_TRUE(folder.plan({}).develops.empty());
+  EXPECT_EQ(folder.plan({}).up_to_date, 3);
+}
+
+TEST(DevelopRule, TheHashCoversSettingsFieldOfViewSeedAndTheTransformsResponse) {
+  film::RgbImage response(2, 1, 0.5f);
+  const DevelopSpec spec;
+  const std::string base = develop_hash(spec, 1, response);
+  EXPECT_EQ(develop_hash(spec, 1, response), base);
+  DevelopSpec other = spec;
+  other.settings.exposure_ev = -1;
+  EXPECT_NE(develop_hash(other, 1, response), base);
+  other = spec;
+  other.settings.look = film::Look::high_contrast;
+  EXPECT_NE(develop_hash(other, 1, response), base);
+  other = spec;
+  other.fov_deg = 40;
+  EXPECT_NE(develop_hash(other, 1, response), base);
+  EXPECT_NE(develop_hash(spec, 2, response), base);
+  response.pixels[4] = 0.51f;  // another blender-data that moves one value
+  EXPECT_NE(develop_hash(spec, 1, response), base);
+}
+
+TEST(FolderClaim, AFolderOfAnOlderFormatIsRefusedUnlessForced) {
+  const auto dir = testing::fresh_test_dir("claim_old_format");
+  Manifest old;
+  old.raintrace_version = "0.1.0";
+  old.format = 1;
+  old.identity = identity();
+  FrameEntry f;
+  f.number = 1;
+  f.image.path = "images/frame_0001.png";
+  old.frames.push_back(f);
+  write(dir / "images/frame_0001.png", "an 8-bit frame");
+  write_manifest(dir / kManifest, old);
+  try {
+    FolderState::claim(dir, identity(), false, "test");
+    FAIL() << "an older folder was resumed";
+  } catch (const FolderRefused& e) {
+    EXPECT_NE(std::string{e.what()}.find("older raintrace"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(FolderState::open(dir, "test"), FolderRefused);
+  ClaimNote note;
+  const auto folder = FolderState::claim(dir, identity(), true, "test", &note);
+  EXPECT_EQ(folder.manifest().format, kFolderFormat);
+  EXPECT_FALSE(fs::exists(dir / "images/frame_0001.png"));
+  EXPECT_NE(note.text.find("older raintrace"), std::string::npos) << note.text;
+}
+
 TEST(Assembly, TheKeyChangesWithTheFramesAndTheirBytes) {
   const auto dir = testing::fresh_test_dir("assembly_key");
   auto folder = FolderState::claim(dir, identity(), false, "test");
   export_and_render(folder, 3);
+  develop_all(folder, 3);
   const std::string all = assembly_key(folder, {1, 2, 3});
   EXPECT_EQ(assembly_key(folder, {1, 2, 3}), all);
   EXPECT_NE(assembly_key(folder, {1, 2}), all);
-  write(dir / final_image_name(Pass::image, 2), "another picture");
-  folder.rendered(Pass::image, 2, 0.1);
+  write(dir / developed_image_name(2), "another picture");
+  folder.developed(2, 0.1);
   EXPECT_NE(assembly_key(folder, {1, 2, 3}), all);
 }
 

@@ -24,19 +24,22 @@ struct FrameSpan {
   [[nodiscard]] bool contains(int frame) const { return frame >= first && frame <= last; }
 };
 
-/// The two pictures a frame can render into.
+/// The two pictures POV-Ray renders for a frame.
 enum class Pass {
-  image,  ///< scene.ini → images/frame_NNNN.png
+  image,  ///< scene.ini → images/frame_NNNN.exr (scene-linear HDR, developed into a PNG)
   mask,   ///< mask.ini (the rain alone, white on black) → images/mask_NNNN.png
 };
 
 /// "frame" or "mask": the word in the pass's file names.
 const char* pass_prefix(Pass pass);
 
-/// Where a frame's finished picture lives, relative to the output folder:
-/// "images/frame_0007.png" or "images/mask_0007.png"; `digits` as in the frame file names (4,
+/// Where the picture POV-Ray rendered for a frame lives, relative to the output folder:
+/// "images/frame_0007.exr" or "images/mask_0007.png"; `digits` as in the frame file names (4,
 /// more past 9999 frames: povgen::frame_digits).
 std::string final_image_name(Pass pass, int frame, int digits = 4);
+
+/// Where a frame's developed picture lives (its EXR through film/): "images/frame_0007.png".
+std::string developed_image_name(int frame, int digits = 4);
 
 /// The frame's POV-Ray file, relative to the output folder: "frames/frame_0007.pov" or
 /// "frames/mask_0007.pov".

@@ -65,9 +65,65 @@ PictureRecord get_picture(const json& object) {
   return p;
 }
 
+json develop_record_to_json(const DevelopRecord& d) {
+  return {{"image", d.path},      {"develop_hash", d.develop_hash}, {"source_hash", d.source_hash},
+          {"image_size", d.size}, {"image_hash", d.file_hash},      {"develop_seconds", d.seconds},
+          {"error", d.error}};
+}
+
+DevelopRecord develop_record_from_json(const json& object) {
+  if (!object.is_object()) throw std::runtime_error("'developed' must be an object");
+  DevelopRecord d;
+  d.path = field<std::string>(object, "image", "");
+  d.develop_hash = field<std::string>(object, "develop_hash", "");
+  d.source_hash = field<std::string>(object, "source_hash", "");
+  d.size = field<std::uint64_t>(object, "image_size", 0);
+  d.file_hash = field<std::string>(object, "image_hash", "");
+  d.seconds = field<double>(object, "develop_seconds", 0.0);
+  d.error = field<std::string>(object, "error", "");
+  return d;
+}
+
+json develop_spec_to_json(const DevelopSpec& spec) {
+  const film::DevelopSettings& s = spec.settings;
+  return {{"exposure_ev", s.exposure_ev},
+          {"view", std::string{film::to_string(s.view)}},
+          {"look", std::string{film::to_string(s.look)}},
+          {"bloom", s.bloom},
+          {"grain", s.grain},
+          {"vignette", s.vignette},
+          {"fov_deg", spec.fov_deg}};
+}
+
+DevelopSpec develop_spec_from_json(const json& object) {
+  if (!object.is_object()) throw std::runtime_error("'develop' must be an object");
+  DevelopSpec spec;
+  film::DevelopSettings& s = spec.settings;
+  s.exposure_ev = field<double>(object, "exposure_ev", s.exposure_ev);
+  const auto view = field<std::string>(object, "view", std::string{film::to_string(s.view)});
+  const auto look = field<std::string>(object, "look", std::string{film::to_string(s.look)});
+  const auto parsed_view = film::parse_view(view);
+  const auto parsed_look = film::parse_look(look);
+  if (!parsed_view) throw std::runtime_error(fmt::format("unknown view '{}'", view.substr(0, 40)));
+  if (!parsed_look) throw std::runtime_error(fmt::format("unknown look '{}'", look.substr(0, 40)));
+  s.view = *parsed_view;
+  s.look = *parsed_look;
+  s.bloom = field<double>(object, "bloom", s.bloom);
+  s.grain = field<double>(object, "grain", s.grain);
+  s.vignette = field<double>(object, "vignette", s.vignette);
+  spec.fov_deg = field<double>(object, "fov_deg", spec.fov_deg);
+  try {
+    film::validate(s);
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(fmt::format("develop: {}", e.what()));
+  }
+  return spec;
+}
+
 json frame_to_json(const FrameEntry& f) {
   json object{{"number", f.number}, {"input_hash", f.input_hash}};
   put_picture(object, f.image);
+  object["developed"] = develop_record_to_json(f.developed);
   if (f.mask) {
     json mask = json::object();
     put_picture(mask, *f.mask);
@@ -83,6 +139,10 @@ FrameEntry frame_from_json(const json& object) {
   try {
     f.input_hash = field<std::string>(object, "input_hash", "");
     f.image = get_picture(object);
+    const auto developed = object.find("developed");
+    if (developed != object.end() && !developed->is_null()) {
+      f.developed = develop_record_from_json(*developed);
+    }
     const auto mask = object.find("mask");
     if (mask != object.end() && !mask->is_null()) {
       if (!mask->is_object()) throw std::runtime_error("'mask' must be an object");
@@ -135,6 +195,7 @@ std::string to_json(const Manifest& m) {
   for (const FrameEntry& f : m.frames) frames.push_back(frame_to_json(f));
   const FolderIdentity& id = m.identity;
   const json doc{{"raintrace_version", m.raintrace_version},
+                 {"folder_format", m.format},
                  {"scene_hash", id.scene_hash},
                  {"seed", id.seed},
                  {"width", id.width},
@@ -142,6 +203,7 @@ std::string to_json(const Manifest& m) {
                  {"fps", id.fps},
                  {"quality", quality_name(id.quality)},
                  {"masks", id.masks},
+                 {"develop", develop_spec_to_json(m.develop)},
                  {"shared_hash", m.shared_hash},
                  {"frame_count", m.frame_count},
                  {"movie_source", m.movie_source},
@@ -164,6 +226,7 @@ Manifest manifest_from_json(const std::string& text) {
   }
   Manifest m;
   m.raintrace_version = field<std::string>(doc, "raintrace_version", "");
+  m.format = field<int>(doc, "folder_format", 1);
   FolderIdentity& id = m.identity;
   id.scene_hash = field<std::string>(doc, "scene_hash", "");
   id.seed = field<std::uint64_t>(doc, "seed", 0);
@@ -176,6 +239,8 @@ Manifest manifest_from_json(const std::string& text) {
   }
   id.quality = quality == "final" ? povgen::Quality::final : povgen::Quality::preview;
   id.masks = field<bool>(doc, "masks", false);
+  const auto develop = doc.find("develop");
+  if (develop != doc.end() && !develop->is_null()) m.develop = develop_spec_from_json(*develop);
   m.shared_hash = field<std::string>(doc, "shared_hash", "");
   m.frame_count = field<int>(doc, "frame_count", 0);
   m.movie_source = field<std::string>(doc, "movie_source", "");

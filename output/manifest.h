@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "film/develop.h"
 #include "povgen/export_params.h"
 
 namespace raintrace::output {
@@ -39,19 +40,37 @@ struct PictureRecord {
   std::string error;       ///< why it failed (status failed), one line
 };
 
+/// A frame's developed picture (images/frame_NNNN.png): its EXR through film/. Current while
+/// develop_hash is the folder's, source_hash the EXR's recorded file hash, and the file has the
+/// recorded size and content hash.
+struct DevelopRecord {
+  std::string path;          ///< "images/frame_0001.png"
+  std::string develop_hash;  ///< the develop hash it was made with; empty: not developed
+  std::string source_hash;   ///< file_hash of the EXR it was developed from
+  std::uint64_t size = 0;    ///< bytes of the PNG as recorded
+  std::string file_hash;     ///< povgen::content_hash of those bytes
+  double seconds = 0.0;      ///< develop's time for it
+  std::string error;         ///< why the last develop failed, one line; empty otherwise
+};
+
 struct FrameEntry {
   int number = 0;  ///< 1-based frame number
   /// Hash of everything this frame's render reads (shared files + its own text). Empty while
   /// the frame file is being written again: such a frame cannot be up to date.
   std::string input_hash;
+  /// The frame POV-Ray renders: images/frame_NNNN.exr.
   PictureRecord image;
+  /// The frame developed from it: images/frame_NNNN.png.
+  DevelopRecord developed;
   /// The rain mask (images/mask_NNNN.png) when the folder was exported with masks.
   std::optional<PictureRecord> mask;
 };
 
 /// What the folder was made from. A run may only add to a folder made from the same.
 struct FolderIdentity {
-  std::string scene_hash;  ///< povgen::content_hash of the scene file's bytes
+  /// povgen::content_hash of the scene's canonical text: every key that shapes the rendered
+  /// frames as loaded, develop keys left out (cli::canonical_scene_text)
+  std::string scene_hash;
   std::uint64_t seed = 0;
   int width = 0;
   int height = 0;
@@ -61,9 +80,25 @@ struct FolderIdentity {
   bool operator==(const FolderIdentity&) const = default;
 };
 
+/// How a folder's frames are developed: the scene's [camera] develop keys and the field of view
+/// vignetting follows (grain follows the identity's seed and each frame's number).
+struct DevelopSpec {
+  film::DevelopSettings settings;
+  double fov_deg = 60.0;
+  bool operator==(const DevelopSpec& other) const {
+    return film::describe(settings) == film::describe(other.settings) && fov_deg == other.fov_deg;
+  }
+};
+
+/// The layout this raintrace writes: 2 = frames rendered as EXR and developed into PNGs. Folders
+/// of format 1 (8-bit PNGs straight from POV-Ray) are not resumed.
+inline constexpr int kFolderFormat = 2;
+
 struct Manifest {
   std::string raintrace_version;
+  int format = kFolderFormat;  ///< JSON "folder_format"; absent = 1
   FolderIdentity identity;
+  DevelopSpec develop;
   /// Hash of the files every frame shares, as last exported (part of every input_hash).
   std::string shared_hash;
   int frame_count = 0;  ///< frames the scene has ([output] frames); 0 before the first export

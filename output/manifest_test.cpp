@@ -29,7 +29,7 @@ Manifest sample() {
   f.number = 2;
   f.input_hash = "aaaa";
   f.image.scene = "frames/frame_0002.pov";
-  f.image.path = "images/frame_0002.png";
+  f.image.path = "images/frame_0002.exr";
   f.image.status = FrameStatus::failed;
   f.image.rendered_hash = "bbbb";
   f.image.seconds = 1.25;
@@ -42,6 +42,19 @@ Manifest sample() {
   mask.size = 5000000000ULL;  // past 32 bits
   mask.file_hash = "dddd";
   f.mask = mask;
+  f.developed.path = "images/frame_0002.png";
+  f.developed.develop_hash = "eeee";
+  f.developed.source_hash = "ffff";
+  f.developed.size = 123456;
+  f.developed.file_hash = "9999";
+  f.developed.seconds = 0.125;
+  m.develop.settings = {.exposure_ev = -1.5,
+                        .view = film::View::filmic,
+                        .look = film::Look::high_contrast,
+                        .bloom = 0.1,
+                        .grain = 0,
+                        .vignette = 0.25};
+  m.develop.fov_deg = 42.5;
   m.frames.push_back(f);
   return m;
 }
@@ -50,7 +63,9 @@ TEST(Manifest, RoundTripsThroughJson) {
   const Manifest m = sample();
   const Manifest back = manifest_from_json(to_json(m));
   EXPECT_EQ(back.raintrace_version, m.raintrace_version);
+  EXPECT_EQ(back.format, kFolderFormat);
   EXPECT_EQ(back.identity, m.identity);
+  EXPECT_EQ(back.develop, m.develop);
   EXPECT_EQ(back.shared_hash, "5555");
   EXPECT_EQ(back.frame_count, 48);
   EXPECT_EQ(back.movie_source, "mmmm");
@@ -60,7 +75,12 @@ TEST(Manifest, RoundTripsThroughJson) {
   EXPECT_EQ(f.number, 2);
   EXPECT_EQ(f.input_hash, "aaaa");
   EXPECT_EQ(f.image.scene, "frames/frame_0002.pov");
-  EXPECT_EQ(f.image.path, "images/frame_0002.png");
+  EXPECT_EQ(f.image.path, "images/frame_0002.exr");
+  EXPECT_EQ(f.developed.path, "images/frame_0002.png");
+  EXPECT_EQ(f.developed.develop_hash, "eeee");
+  EXPECT_EQ(f.developed.source_hash, "ffff");
+  EXPECT_EQ(f.developed.size, 123456U);
+  EXPECT_EQ(f.developed.file_hash, "9999");
   EXPECT_EQ(f.image.status, FrameStatus::failed);
   EXPECT_EQ(f.image.rendered_hash, "bbbb");
   EXPECT_DOUBLE_EQ(f.image.seconds, 1.25);
@@ -70,6 +90,17 @@ TEST(Manifest, RoundTripsThroughJson) {
   EXPECT_EQ(f.mask->size, 5000000000ULL);
   EXPECT_EQ(f.mask->file_hash, "dddd");
   EXPECT_EQ(to_json(back), to_json(m));
+}
+
+TEST(Manifest, AManifestWithoutAFormatIsOfTheFirstFormat) {
+  // Written by raintrace before frames were HDR: no "folder_format", no "develop".
+  const Manifest m = manifest_from_json(R"({"raintrace_version": "0.1.0", "frames": []})");
+  EXPECT_EQ(m.format, 1);
+  EXPECT_EQ(m.develop, DevelopSpec{});
+  EXPECT_THROW(manifest_from_json(R"({"raintrace_version": "x", "develop": {"look": "vivid"}})"),
+               std::runtime_error);
+  EXPECT_THROW(manifest_from_json(R"({"raintrace_version": "x", "develop": {"bloom": 3}})"),
+               std::runtime_error);
 }
 
 TEST(Manifest, StatusesAreReadableWordsInTheJson) {

@@ -115,7 +115,7 @@ struct ExportParams {
   /// frame). 1 writes every droplet.
   double splash_keep = 0.5;
   /// At quality preview, let frames draw the environment plate: a picture of the environment
-  /// without rain, rendered once (plate.ini → textures/environment_plate.png), placed behind the
+  /// without rain, rendered once (plate.ini → textures/environment_plate.exr), placed behind the
   /// rain instead of ray tracing the environment in every frame. Only the environment's lights
   /// stay in the frame to light the rain. Applies to night_street and field without fog
   /// (environment_plate_applies()); frames with lightning trace the full environment. What it

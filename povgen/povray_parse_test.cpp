@@ -1,7 +1,7 @@
 // End-to-end checks with the real POV-Ray (ctest label `povray`; skipped without povray):
 // every template and fog mode parses and renders, preview differs from final only through
 // RT_Preview, the environment plate stands in for the environment, scene.ini names images
-// frame_NNNN.png for a sub-range, masks are rain on black, renders repeat across thread counts,
+// frame_NNNN.exr for a sub-range, masks are rain on black, renders repeat across thread counts,
 // mist deepens.
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
@@ -94,7 +94,7 @@ TEST(PovRayTemplates, EveryEnvironmentAndFogModeRenders) {
         std::string{c.environment} + "_" + std::to_string(static_cast<int>(c.fog));
     const fs::path dir = make_folder(name, look);
     ASSERT_EQ(run_povray(dir, "scene.ini"), 0) << name << ":\n" << log_of(dir);
-    const auto px = read_rgb(dir / "images" / "frame_0001.png");
+    const auto px = read_rgb(dir / "images" / "frame_0001.exr");
     ASSERT_FALSE(px.empty()) << name;
     EXPECT_GT(spread(px), 0.1) << name << ": image is blank";
     fs::remove_all(dir);
@@ -136,13 +136,13 @@ TEST(PovRayTemplates, PreviewVariantsRenderAndFinalIsTheSameSceneWithRtPreviewZe
   }
 }
 
-/// Writes a width×height PNG of one colour (8 bits, as POV-Ray writes).
-void write_solid_png(const fs::path& path, int width, int height, float r, float g, float b) {
+/// Writes a width×height half-float EXR of one colour (as POV-Ray's +FE writes a plate).
+void write_solid_exr(const fs::path& path, int width, int height, float r, float g, float b) {
   std::vector<float> px;
   for (int i = 0; i < width * height; ++i) px.insert(px.end(), {r, g, b});
   auto out = OIIO::ImageOutput::create(path.string());
   ASSERT_TRUE(out);
-  ASSERT_TRUE(out->open(path.string(), OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::UINT8)));
+  ASSERT_TRUE(out->open(path.string(), OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::HALF)));
   ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, px.data()));
   out->close();
 }
@@ -157,16 +157,17 @@ TEST(PovRayPlate, FramesDrawThePlateInsteadOfTheEnvironmentWhereItIsFaithful) {
     const fs::path dir = make_folder(name, look, 2, 1500);
     ASSERT_TRUE(fs::exists(dir / "plate.ini")) << name;
     ASSERT_EQ(run_povray(dir, "plate.ini"), 0) << name << log_of(dir);
-    const auto plate = read_rgb(dir / "textures" / "environment_plate.png");
+    const auto plate = read_rgb(dir / "textures" / "environment_plate.exr");
     ASSERT_EQ(plate.size(), 48u * 27u * 3u) << name;
     EXPECT_GT(spread(plate), 0.05) << name << ": the plate is blank";
 
-    // Without rain a frame is its plate, pixel for pixel: the plate lines up with the camera.
+    // Without rain a frame is its plate, pixel for pixel and value for value (HDR: lamps far
+    // above 1 included): the plate lines up with the camera and passes through unchanged.
     write_file_atomic(dir / "frames" / "bare.pov",
                       "#declare RT_Flash=0;\n#include \"scene.inc\"\n");
-    const std::string bare = "frames/bare.pov +W48 +H27 +FN -A +L. +WT1 ";
-    ASSERT_EQ(run_povray(dir, bare + "+Oimages/bare.png"), 0) << name << log_of(dir);
-    EXPECT_EQ(read_rgb(dir / "images" / "bare.png"), plate) << name;
+    const std::string bare = "frames/bare.pov +W48 +H27 -A +L. +WT1 ";
+    ASSERT_EQ(run_povray(dir, bare + "+FE +Oimages/bare.exr"), 0) << name << log_of(dir);
+    EXPECT_EQ(read_rgb(dir / "images" / "bare.exr"), plate) << name;
 
     // With rain: close to the fully traced environment (what the plate leaves out is the rain
     // in the wet street's reflection and droplets the kerbs hide).
@@ -182,17 +183,17 @@ TEST(PovRayPlate, FramesDrawThePlateInsteadOfTheEnvironmentWhereItIsFaithful) {
     // the plate's pixels. A plate of one flat colour tells the two apart.
     const std::string frame1 = "frames/frame_0001.pov +W48 +H27 +FN -A +L. +WT1 ";
     ASSERT_EQ(run_povray(dir, frame1 + "+Oimages/full1.png Declare=RT_NoPlate=1"), 0) << name;
-    write_solid_png(dir / "textures" / "environment_plate.png", 48, 27, 1.0f, 0.0f, 1.0f);
+    write_solid_exr(dir / "textures" / "environment_plate.exr", 48, 27, 1.0f, 0.0f, 1.0f);
     ASSERT_EQ(run_povray(dir, frame1 + "+Oimages/flat1.png"), 0) << name << log_of(dir);
     EXPECT_EQ(read_rgb(dir / "images" / "flat1.png"), read_rgb(dir / "images" / "full1.png"))
         << name;
-    ASSERT_EQ(run_povray(dir, bare + "+Oimages/flat_bare.png"), 0) << name << log_of(dir);
+    ASSERT_EQ(run_povray(dir, bare + "+FN +Oimages/flat_bare.png"), 0) << name << log_of(dir);
     const auto flat = read_rgb(dir / "images" / "flat_bare.png");
     ASSERT_FALSE(flat.empty());
     EXPECT_EQ(flat[0], 1.0f);
     EXPECT_EQ(flat[1], 0.0f);
     // A plate of another size (rendered by hand at another resolution) is not used.
-    write_solid_png(dir / "textures" / "environment_plate.png", 24, 27, 1.0f, 0.0f, 1.0f);
+    write_solid_exr(dir / "textures" / "environment_plate.exr", 24, 27, 1.0f, 0.0f, 1.0f);
     ASSERT_EQ(run_povray(dir, frame2 + "+Oimages/wrong2.png"), 0) << name << log_of(dir);
     EXPECT_EQ(read_rgb(dir / "images" / "wrong2.png"), traced) << name;
     fs::remove_all(dir);
@@ -201,16 +202,21 @@ TEST(PovRayPlate, FramesDrawThePlateInsteadOfTheEnvironmentWhereItIsFaithful) {
 
 TEST(PovRayAnimation, SceneIniNamesImagesWithFourDigitsForAnySubRange) {
   SKIP_WITHOUT_POVRAY();
-  // 48 frames: with Final_Frame=48 POV-Ray would write frame_02.png. Frames 2-3 only.
+  // 48 frames: with Final_Frame=48 POV-Ray would write frame_02.exr. Frames 2-3 only, as
+  // half-float OpenEXR (scene.ini's Output_File_Type=E: the frames stay scene-linear).
   const fs::path dir = make_folder("animation", tiny_look(), 48, 200);
   ASSERT_EQ(run_povray(dir, "scene.ini +SF2 +EF3"), 0) << log_of(dir);
-  EXPECT_TRUE(fs::exists(dir / "images" / "frame_0002.png"));
-  EXPECT_TRUE(fs::exists(dir / "images" / "frame_0003.png"));
-  EXPECT_FALSE(fs::exists(dir / "images" / "frame_0001.png"));
-  EXPECT_FALSE(fs::exists(dir / "images" / "frame_02.png"));
+  EXPECT_TRUE(fs::exists(dir / "images" / "frame_0002.exr"));
+  EXPECT_TRUE(fs::exists(dir / "images" / "frame_0003.exr"));
+  EXPECT_FALSE(fs::exists(dir / "images" / "frame_0001.exr"));
+  EXPECT_FALSE(fs::exists(dir / "images" / "frame_02.exr"));
+  EXPECT_FALSE(fs::exists(dir / "images" / "frame_0002.png"));
+  auto in = OIIO::ImageInput::open((dir / "images" / "frame_0002.exr").string());
+  ASSERT_TRUE(in);
+  EXPECT_EQ(in->spec().format, OIIO::TypeDesc::HALF);
   // frame_number picked the right file: frames 2 and 3 hold different rain.
-  EXPECT_GT(mean_abs_difference(read_rgb(dir / "images" / "frame_0002.png"),
-                                read_rgb(dir / "images" / "frame_0003.png")),
+  EXPECT_GT(mean_abs_difference(read_rgb(dir / "images" / "frame_0002.exr"),
+                                read_rgb(dir / "images" / "frame_0003.exr")),
             0.0);
   fs::remove_all(dir);
 }
@@ -310,7 +316,7 @@ TEST(PovRayMist, MistDeepensWithDensityAndDepth) {
     look.fog.depth_m = depth;
     const fs::path dir = make_folder("mist_" + name, look, 1, 100);
     EXPECT_EQ(run_povray(dir, "scene.ini"), 0) << log_of(dir);
-    auto px = read_rgb(dir / "images" / "frame_0001.png");
+    auto px = read_rgb(dir / "images" / "frame_0001.exr");  // scene-linear: the mist's own light
     fs::remove_all(dir);
     return px;
   };

@@ -79,7 +79,7 @@ std::string environment_with_plate_text(const ExportParams& look, const std::str
   text += "#declare RT_LightsOnly=0;\n";
   text += "#if(RT_Preview & !RT_NoPlate & RT_Flash<=0 & !RT_Bolts)\n";
   text += "#if(file_exists(\"" + plate + "\"))\n";
-  text += "#declare RT_Plate=pigment{image_map{png \"" + plate + "\" once}}\n";
+  text += "#declare RT_Plate=pigment{image_map{exr \"" + plate + "\" once}}\n";
   text +=
       "#declare RT_LightsOnly=(max_extent(RT_Plate).x=image_width & "
       "max_extent(RT_Plate).y=image_height);\n#end\n#end\n";
@@ -95,6 +95,7 @@ std::string environment_with_plate_text(const ExportParams& look, const std::str
           format_number(look.camera.fov_deg) + "/2));\n";
   text += "polygon{5,<0,0>,<1,0>,<1,1>,<0,1>,<0,0>\n";
   // Emission 1 and nothing else: the plate's pixels come out as they went in.
+  // (Checked: an EXR plate's 0.18 and 8 come out of a +FE frame as 0.18 and 8.)
   text += " texture{pigment{RT_Plate} finish{ambient 0 diffuse 0 emission 1}}\n";
   text += " no_shadow no_reflection\n";
   text += " translate<-0.5,-0.5,0> scale<RT_PlateWidth,RT_PlateWidth/" + aspect +
@@ -141,7 +142,7 @@ bool environment_plate_applies(const ExportParams& look) {
 
 std::string plate_pov_text() {
   return "// raintrace: the environment alone, without rain: plate.ini renders it into\n"
-         "// textures/environment_plate.png, which the frames of a preview draw behind the rain.\n"
+         "// textures/environment_plate.exr, which the frames of a preview draw behind the rain.\n"
          "#version 3.7;\n#declare RT_NoPlate=1;\n#include \"scene.inc\"\n";
 }
 
@@ -150,12 +151,12 @@ std::string plate_ini_text(const ExportParams& look) {
   std::string text;
   text +=
       "; raintrace: `povray plate.ini` renders the environment once, without rain, into\n"
-      "; textures/environment_plate.png. Render it before scene.ini: every frame then draws this\n"
+      "; textures/environment_plate.exr. Render it before scene.ini: every frame then draws this\n"
       "; picture behind the rain instead of ray tracing the environment again. Without it the\n"
       "; frames trace the whole environment themselves (the same scene, only slower).\n";
   text += std::string{"Input_File_Name="} + kPlatePov + "\n";
   text += std::string{"Output_File_Name="} + kEnvironmentPlate + "\n";
-  text += "Output_File_Type=N\nOutput_Alpha=off\n";
+  text += "Output_File_Type=E\nOutput_Alpha=off\n";
   text += "Width=" + std::to_string(look.width) + "\nHeight=" + std::to_string(look.height) + "\n";
   text += "Library_Path=.\nQuality=9\nAntialias=off\nDisplay=off\nPause_When_Done=off\n";
   return text;
@@ -262,9 +263,23 @@ std::string ini_text(const ExportParams& look, int frame_count, const char* pref
   if (p == "frame" && environment_plate_applies(look)) {
     text += "; Preview: `povray plate.ini` first renders the environment once for all frames.\n";
   }
+  if (p == "frame") {
+    // The develop settings are not written here: changing them must not change any file POV-Ray
+    // reads, or every frame would count as changed and be rendered again.
+    text +=
+        "; Frames are scene-linear half-float OpenEXR (images/frame_NNNN.exr), the camera's raw\n"
+        "; light. `raintrace render .` in this folder develops them into images/frame_NNNN.png\n"
+        "; (exposure, Filmic, bloom, grain, vignetting: the scene's [camera] keys); by hand, the\n"
+        "; Filmic view and look alone at exposure_ev 0 (docs/hdr-pipeline.md) are:\n"
+        ";   oiiotool images/frame_0001.exr --colorconfig "
+        "/usr/share/blender/datafiles/colormanagement/config.ocio\n"
+        ";     --ociolook:from=Linear:to=Linear \"Medium High Contrast\" --ociodisplay:from=Linear "
+        "sRGB Filmic\n"
+        ";     -d uint8 -o frame_0001.png\n";
+  }
   text += "Input_File_Name=" + d + "\n";
   text += "Output_File_Name=images/" + p + "_\n";
-  text += "Output_File_Type=N\nOutput_Alpha=off\n";
+  text += std::string{"Output_File_Type="} + (p == "frame" ? "E" : "N") + "\nOutput_Alpha=off\n";
   text += "Width=" + std::to_string(look.width) + "\nHeight=" + std::to_string(look.height) + "\n";
   text += "Library_Path=.\n";
   text += "Initial_Frame=1\nFinal_Frame=" + last_frame + "\n";

@@ -13,7 +13,8 @@ namespace raintrace::povgen {
 inline constexpr const char* kEnvironmentInclude = "environment.inc";
 inline constexpr const char* kMaterialsInclude = "raintrace_materials.inc";
 inline constexpr const char* kStreakAtlas = "textures/streak_atlas.png";
-inline constexpr const char* kEnvironmentPlate = "textures/environment_plate.png";
+/// Scene-linear HDR like the frames: lamps far above 1 and the dark end pass through unchanged.
+inline constexpr const char* kEnvironmentPlate = "textures/environment_plate.exr";
 inline constexpr const char* kSceneInclude = "scene.inc";
 inline constexpr const char* kPlateIni = "plate.ini";
 inline constexpr const char* kPlatePov = "plate.pov";
@@ -32,7 +33,7 @@ bool environment_plate_applies(const ExportParams& look);
 /// plate.pov: the environment alone (scene.inc with RT_NoPlate=1, no rain).
 std::string plate_pov_text();
 
-/// plate.ini: renders plate.pov into textures/environment_plate.png at the frames' size.
+/// plate.ini: renders plate.pov into textures/environment_plate.exr at the frames' size.
 std::string plate_ini_text(const ExportParams& look);
 
 /// scene.pov: includes frames/<prefix>_NNNN.pov for POV-Ray's frame_number (prefix "frame"
@@ -40,7 +41,9 @@ std::string plate_ini_text(const ExportParams& look);
 std::string dispatcher_text(const char* prefix, int digits);
 
 /// scene.ini (prefix "frame", dispatcher "scene.pov") or mask.ini ("mask", "mask.pov"):
-/// renders frames 1..frame_count into images/<prefix>_NNNN.png from inside the folder.
+/// renders frames 1..frame_count from inside the folder into images/frame_NNNN.exr (half-float
+/// OpenEXR, scene-linear: raintrace develops each into images/frame_NNNN.png) or
+/// images/mask_NNNN.png.
 std::string ini_text(const ExportParams& look, int frame_count, const char* prefix,
                      const char* dispatcher);
 

@@ -29,6 +29,16 @@ TEST(SceneFiles, IniPadsFrameNumbersToFourDigitsWhateverTheCount) {
   EXPECT_TRUE(contains(dispatcher_text("frame", 5), "str(frame_number, -5, 0)"));
 }
 
+TEST(SceneFiles, FramesAreRenderedAsOpenExrAndMasksAsPng) {
+  ExportParams look;
+  const std::string frames = ini_text(look, 4, "frame", "scene.pov");
+  EXPECT_TRUE(contains(frames, "\nOutput_File_Type=E\n"));          // scene-linear half float
+  EXPECT_TRUE(contains(frames, "oiiotool images/frame_0001.exr"));  // how to look without us
+  EXPECT_TRUE(contains(ini_text(look, 4, "mask", "mask.pov"), "\nOutput_File_Type=N\n"));
+  // Develop settings are not in any file POV-Ray reads: editing them re-renders nothing.
+  EXPECT_FALSE(contains(frames, "exposure_ev ="));
+}
+
 TEST(SceneFiles, QualityPicksAntialiasing) {
   ExportParams look;
   look.quality = Quality::preview;
@@ -166,7 +176,8 @@ TEST(SceneFiles, EnvironmentPlateOnlyWhereItStandsInFaithfully) {
   ExportParams look;  // preview, night_street, no fog
   EXPECT_TRUE(environment_plate_applies(look));
   const std::string inc = scene_inc_text(look);
-  EXPECT_TRUE(contains(inc, "file_exists(\"textures/environment_plate.png\")"));
+  EXPECT_TRUE(contains(inc, "file_exists(\"textures/environment_plate.exr\")"));
+  EXPECT_TRUE(contains(inc, "image_map{exr \"textures/environment_plate.exr\" once}"));
   EXPECT_TRUE(contains(inc, "RT_Flash<=0 & !RT_Bolts"));
   EXPECT_TRUE(contains(inc, "max_extent(RT_Plate).x=image_width"));
   EXPECT_TRUE(contains(ini_text(look, 2, "frame", "scene.pov"), "povray plate.ini"));
@@ -200,7 +211,9 @@ TEST(SceneFiles, PlateIniRendersTheEnvironmentAloneAtTheFramesSize) {
   look.height = 240;
   const std::string ini = plate_ini_text(look);
   EXPECT_TRUE(contains(ini, "\nInput_File_Name=plate.pov\n"));
-  EXPECT_TRUE(contains(ini, "\nOutput_File_Name=textures/environment_plate.png\n"));
+  // HDR like the frames: lamps far above 1 reach the frames unclipped.
+  EXPECT_TRUE(contains(ini, "\nOutput_File_Name=textures/environment_plate.exr\n"));
+  EXPECT_TRUE(contains(ini, "\nOutput_File_Type=E\n"));
   EXPECT_TRUE(contains(ini, "\nWidth=320\nHeight=240\n"));
   EXPECT_TRUE(contains(ini, "\nAntialias=off\n"));
   EXPECT_TRUE(contains(plate_pov_text(), "#declare RT_NoPlate=1;\n#include \"scene.inc\""));

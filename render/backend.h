@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "output/folder_state.h"
+#include "render/develop_queue.h"
 #include "render/povray_runner.h"
 #include "render/progress.h"
 
@@ -43,9 +44,25 @@ void clean_temp_images(const std::filesystem::path& out_dir);
 
 /// Runner callbacks that record each event in the folder (rendering, rendered, failed) and in
 /// the progress: shared by the local backend and the Slurm merge. `on_failed` is told of every
-/// failure after it is recorded.
+/// failure after it is recorded. `develop` is called with each frame whose EXR was just
+/// recorded as rendered: the frame counts as done once its PNG is developed
+/// (record_developed), a mask as soon as it is rendered.
 RunnerCallbacks folder_callbacks(output::FolderState& folder, ProgressReporter& reporter,
                                  RenderSummary& summary,
-                                 const std::function<void(const FrameFailure&)>& on_failed);
+                                 const std::function<void(const FrameFailure&)>& on_failed,
+                                 std::function<void(int frame)> develop);
+
+/// Records develop results in the folder (developed, or develop_failed) and in the progress
+/// (done, or failed with a FrameFailure in the summary, told to on_failed). Throws
+/// std::system_error (ENOSPC) when a develop failed because the folder's disk is full.
+void record_developed(output::FolderState& folder, ProgressReporter& reporter,
+                      RenderSummary& summary, const std::vector<DevelopResult>& results,
+                      const std::function<void(const FrameFailure&)>& on_failed);
+
+/// Waits (reporting progress) until `queue` has developed everything submitted, or a stop
+/// request ends it, recording every result.
+void finish_developing(DevelopQueue& queue, output::FolderState& folder, ProgressReporter& reporter,
+                       RenderSummary& summary,
+                       const std::function<void(const FrameFailure&)>& on_failed);
 
 }  // namespace raintrace::render

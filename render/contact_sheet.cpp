@@ -34,7 +34,7 @@ ContactSheetResult make_contact_sheet(const std::filesystem::path& out_dir,
   if (chosen.empty()) return result;
   std::vector<OIIO::ImageBuf> cells;
   for (int f : chosen) {
-    OIIO::ImageBuf in{(out_dir / final_image_name(Pass::image, f, digits)).string()};
+    OIIO::ImageBuf in{(out_dir / developed_image_name(f, digits)).string()};
     if (!in.read(0, 0, true, OIIO::TypeDesc::FLOAT)) {
       throw std::runtime_error(
           fmt::format("contact sheet: cannot read frame {}: {}", f, in.geterror()));

@@ -28,7 +28,7 @@ TEST(ContactSheet, PlacesEachFrameInItsGridCell) {
     OIIO::ImageBuf img{OIIO::ImageSpec{20, 10, 3, OIIO::TypeDesc::UINT8}};
     const float c[3] = {static_cast<float>(f) / 5.0f, 0.0f, 1.0f - static_cast<float>(f) / 5.0f};
     OIIO::ImageBufAlgo::fill(img, c);
-    ASSERT_TRUE(img.write((dir / final_image_name(Pass::image, f)).string()));
+    ASSERT_TRUE(img.write((dir / developed_image_name(f)).string()));
   }
   const auto result = make_contact_sheet(dir, {1, 2, 3, 4, 5}, 9);
   ASSERT_FALSE(result.path.empty());

@@ -1,5 +1,5 @@
 // The environment plate of a preview folder: plate.ini renders the scene's environment once,
-// without rain, into textures/environment_plate.png, and each frame's scene.inc draws that image
+// without rain, into textures/environment_plate.exr, and each frame's scene.inc draws that image
 // behind the rain when it exists at the frame size, instead of tracing the environment again.
 // Frames look for the file when POV-Ray parses them, so the plate must be in place (or known to
 // have failed, and absent) before any frame's POV-Ray starts, or images would depend on timing.

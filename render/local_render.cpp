@@ -18,14 +18,16 @@ using output::FolderState;
 using output::RenderReason;
 
 // Jobs for frames as the exporter publishes them: each picture that needs a render waits until
-// its span is complete (StreamingSpans), images before masks.
+// its span is complete (StreamingSpans), images before masks. A frame whose EXR is current but
+// whose PNG is not goes straight to develop.
 class FeedSource : public JobSource {
  public:
   FeedSource(FrameFeed& feed, FolderState& folder, const LocalRenderSettings& settings, int jobs,
-             RenderProgress& progress)
+             RenderProgress& progress, std::function<void(int, bool)> develop)
       : m_feed{feed},
         m_folder{folder},
         m_settings{settings},
+        m_develop{std::move(develop)},
         m_jobs{jobs},
         m_masks_wanted{folder.manifest().identity.masks},
         m_progress{progress},
@@ -55,10 +57,13 @@ class FeedSource : public JobSource {
           output::needs_render(m_folder.decide(Pass::image, frame.number, m_settings.force));
       const bool mask = m_masks_wanted && output::needs_render(m_folder.decide(
                                               Pass::mask, frame.number, m_settings.force));
+      const bool develop_only =
+          !image && output::needs_develop(m_folder.decide_develop(frame.number));
       m_images.arrived(frame.number, image);
       m_masks.arrived(frame.number, mask);
-      m_jobs_known += (image ? 1 : 0) + (mask ? 1 : 0);
-      m_progress.skipped += image || mask ? 0 : 1;
+      if (develop_only) m_develop(frame.number, true);
+      m_jobs_known += (image || develop_only ? 1 : 0) + (mask ? 1 : 0);
+      m_progress.skipped += image || develop_only || mask ? 0 : 1;
       ++m_progress.exported;
     }
     if (batch.closed) {
@@ -83,6 +88,7 @@ class FeedSource : public JobSource {
   FrameFeed& m_feed;
   FolderState& m_folder;
   const LocalRenderSettings& m_settings;
+  std::function<void(int, bool)> m_develop;
   int m_jobs;
   bool m_masks_wanted;
   RenderProgress& m_progress;
@@ -125,6 +131,7 @@ class AfterPlate : public JobSource {
 
 RenderSummary render_local(FolderState& folder, const LocalRenderSettings& settings) {
   require_povray();
+  const auto display = prepare_develop(folder);
   const auto& out_dir = folder.dir();
   clean_temp_images(out_dir);
   const int jobs = std::max(1, settings.jobs);
@@ -139,7 +146,14 @@ RenderSummary render_local(FolderState& folder, const LocalRenderSettings& setti
   runner.height = identity.height;
   runner.digits = folder.digits();
   runner.stop = settings.stop;
-  const RunnerCallbacks callbacks = folder_callbacks(folder, reporter, summary, settings.on_failed);
+  DevelopQueue developer{out_dir, develop_target(folder.manifest()), *display, settings.stop};
+  auto develop = [&developer](int frame, bool only = false) { developer.submit(frame, only); };
+  RunnerCallbacks callbacks =
+      folder_callbacks(folder, reporter, summary, settings.on_failed, develop);
+  callbacks.on_tick = [&] {
+    record_developed(folder, reporter, summary, developer.take(), settings.on_failed);
+    reporter.report();
+  };
   auto notice = [&](const std::string& text) {
     if (settings.on_notice) settings.on_notice(text);
   };
@@ -147,6 +161,10 @@ RenderSummary render_local(FolderState& folder, const LocalRenderSettings& setti
     if (!plate.problem().empty() && !plate.interrupted()) notice(environment_plate_notice(plate));
   };
   auto finish = [&] {
+    // Every frame POV-Ray finished is developed before the run ends (when stopped, only the
+    // frame in hand: the others stay rendered, and the next run develops them).
+    finish_developing(developer, folder, reporter, summary, settings.on_failed);
+    if (settings.stop != nullptr && settings.stop->load()) summary.interrupted = true;
     reporter.report();
     summary.progress = progress;
     return summary;
@@ -156,7 +174,7 @@ RenderSummary render_local(FolderState& folder, const LocalRenderSettings& setti
     // Started before anything is known about the frames: it renders while the exporter
     // simulates. (A run whose frames all turn out up to date renders it anyway.)
     EnvironmentPlate plate{out_dir, runner.width, runner.height, settings.stop};
-    FeedSource feed{*settings.incoming, folder, settings, jobs, progress};
+    FeedSource feed{*settings.incoming, folder, settings, jobs, progress, develop};
     AfterPlate source{feed, plate, [&] { report_plate(plate); }};
     reporter.report();
     summary.interrupted = !run_povray_jobs(out_dir, source, runner, callbacks);
@@ -179,12 +197,13 @@ RenderSummary render_local(FolderState& folder, const LocalRenderSettings& setti
   for (const auto& span : split_into_spans(plan.masks, jobs, settings.max_span)) {
     queue.push_back({Pass::mask, span});
   }
-  progress.total = static_cast<int>(plan.images.size() + plan.masks.size());
+  progress.total = static_cast<int>(plan.images.size() + plan.masks.size() + plan.develops.size());
   progress.skipped = plan.up_to_date;
+  for (const int frame : plan.develops) developer.submit(frame, true);
   reporter.report();
   if (!queue.empty()) {
     EnvironmentPlate plate{out_dir, runner.width, runner.height, settings.stop};
-    plate.wait([&] { reporter.report(); });  // keeps the progress display alive
+    plate.wait(callbacks.on_tick);  // keeps the progress display (and develop) going
     if (plate.interrupted()) {
       summary.interrupted = true;
       return finish();

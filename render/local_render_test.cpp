@@ -43,6 +43,10 @@ void expect_every_frame_rendered(const std::filesystem::path& dir, std::size_t f
     EXPECT_TRUE(image_is_complete(dir / f.image.path, 64, 36)) << f.image.path;
     EXPECT_EQ(f.image.status, output::FrameStatus::rendered);
     EXPECT_EQ(f.image.rendered_hash, f.input_hash);
+    // …and developed from that very EXR into a whole PNG.
+    EXPECT_TRUE(image_is_complete(dir / f.developed.path, 64, 36)) << f.developed.path;
+    EXPECT_FALSE(f.developed.develop_hash.empty()) << f.number;
+    EXPECT_EQ(f.developed.source_hash, f.image.file_hash) << f.number;
   }
   EXPECT_TRUE(std::filesystem::is_empty(dir / "images/.tmp"));
 }
@@ -77,6 +81,32 @@ TEST_F(PovrayLocalRender, RendersEveryFrameToAValidImageAndRecordsItInTheManifes
   expect_every_frame_rendered(dir, 6);
 }
 
+TEST_F(PovrayLocalRender, OtherDevelopSettingsDevelopEveryFrameAgainAndStartNoPovray) {
+  const auto dir = testing::fresh_test_dir("develop_only");
+  testing::write_test_folder(dir, {.frames = 4});
+  ASSERT_EQ(render_local(dir, settings(2)).progress.done, 4);
+  const auto exr_written = std::filesystem::last_write_time(dir / "images/frame_0002.exr");
+  std::filesystem::remove_all(dir / "logs");
+  {
+    auto folder = output::FolderState::open(dir, "test");
+    output::DevelopSpec darker = folder.manifest().develop;
+    darker.settings.exposure_ev = -2;
+    folder.set_develop(darker);
+  }
+  const auto summary = render_local(dir, settings(2));
+  EXPECT_EQ(summary.progress.total, 4);
+  EXPECT_EQ(summary.progress.done, 4);
+  EXPECT_EQ(summary.progress.developed_only, 4);
+  if (std::filesystem::exists(dir / "logs")) {
+    for (const auto& entry : std::filesystem::directory_iterator(dir / "logs")) {
+      EXPECT_NE(entry.path().filename().string().rfind("image_", 0), 0U) << "POV-Ray ran";
+    }
+  }
+  EXPECT_EQ(std::filesystem::last_write_time(dir / "images/frame_0002.exr"), exr_written);
+  expect_every_frame_rendered(dir, 4);
+  EXPECT_EQ(render_local(dir, settings(2)).progress.total, 0);
+}
+
 TEST_F(PovrayLocalRender, MaskOptionAlsoRendersMaskImagesFromMaskIni) {
   const auto dir = testing::fresh_test_dir("mask");
   testing::write_test_folder(dir, {.frames = 3, .masks = true});
@@ -95,13 +125,13 @@ TEST_F(PovrayLocalRender, RerunRendersOnlyFramesWhoseInputsChanged) {
   const auto dir = testing::fresh_test_dir("resume");
   testing::write_test_folder(dir, {.frames = 4});
   ASSERT_EQ(render_local(dir, settings(2)).progress.done, 4);
-  const auto before = std::filesystem::last_write_time(dir / "images/frame_0001.png");
+  const auto before = std::filesystem::last_write_time(dir / "images/frame_0001.exr");
   // Frame 3's inputs change: only it is redone.
   testing::replace_frame(dir, 3, "#include \"scene.inc\"\nsphere { 0, 1 pigment { rgb 1 } }\n");
   const auto summary = render_local(dir, settings(2));
   EXPECT_EQ(summary.progress.total, 1);
   EXPECT_EQ(summary.progress.skipped, 3);
-  EXPECT_EQ(std::filesystem::last_write_time(dir / "images/frame_0001.png"), before);
+  EXPECT_EQ(std::filesystem::last_write_time(dir / "images/frame_0001.exr"), before);
   EXPECT_EQ(render_local(dir, settings(2)).progress.total, 0);
   EXPECT_EQ(render_local(dir, settings(2, 12, true)).progress.total, 4);
 }

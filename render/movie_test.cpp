@@ -50,7 +50,7 @@ TEST(Movies, OddSizedFramesBecomeAPlayableMp4AndGif) {
     OIIO::ImageBuf img{OIIO::ImageSpec{33, 17, 3, OIIO::TypeDesc::UINT8}};
     const float c[3] = {static_cast<float>(f) / 4.0f, 0.5f, 0.2f};
     OIIO::ImageBufAlgo::fill(img, c);
-    ASSERT_TRUE(img.write((dir / final_image_name(Pass::image, f)).string()));
+    ASSERT_TRUE(img.write((dir / developed_image_name(f)).string()));
   }
   const auto result = make_movies(dir, 24, {1, 4, 4});  // a fifth image exists: not shown
   EXPECT_TRUE(result.warning.empty()) << result.warning;

@@ -11,12 +11,21 @@ namespace raintrace::render {
 
 namespace {
 const char* prefix(Pass pass) { return output::pass_prefix(pass); }
+
+// The extension of the pass's picture: EXR for the frame (light), PNG for the mask (data).
+const char* extension(Pass pass) { return pass == Pass::image ? "exr" : "png"; }
+
 }  // namespace
 
 std::string temp_dir_name() { return "images/.tmp"; }
 
 std::string temp_image_name(Pass pass, int frame, int digits) {
-  return fmt::format("{}/{}_{:0{}d}.png", temp_dir_name(), prefix(pass), frame, digits);
+  return fmt::format("{}/{}_{:0{}d}.{}", temp_dir_name(), prefix(pass), frame, digits,
+                     extension(pass));
+}
+
+std::string temp_developed_name(int frame, int digits) {
+  return fmt::format("{}/{}_{:0{}d}.png", temp_dir_name(), prefix(Pass::image), frame, digits);
 }
 
 std::vector<std::string> povray_argv(Pass pass, const FrameSpan& span, int digits) {
@@ -24,23 +33,23 @@ std::vector<std::string> povray_argv(Pass pass, const FrameSpan& span, int digit
   return {"povray",
           pass == Pass::image ? "scene.ini" : "mask.ini",
           "-D",
-          "+FN",
+          pass == Pass::image ? "+FE" : "+FN",
           "-V",
           "-GR",
           "+L.",
-          fmt::format("+O{}/{}_.png", temp_dir_name(), prefix(pass)),
+          fmt::format("+O{}/{}_.{}", temp_dir_name(), prefix(pass), extension(pass)),
           "+KFI1",
           "+KFF" + std::string(static_cast<std::size_t>(digits), '9'),
           fmt::format("+SF{}", span.first),
           fmt::format("+EF{}", span.last)};
 }
 
-std::string environment_plate_temp_name() { return temp_dir_name() + "/environment_plate.png"; }
+std::string environment_plate_temp_name() { return temp_dir_name() + "/environment_plate.exr"; }
 
 std::vector<std::string> environment_plate_argv() {
   // +O overrides plate.ini's Output_File_Name: the plate reaches its final name only verified.
   return {"povray", povgen::kPlateIni,
-          "-D",     "+FN",
+          "-D",     "+FE",
           "-V",     "-GR",
           "+L.",    "+O" + environment_plate_temp_name()};
 }

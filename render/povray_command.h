@@ -13,31 +13,37 @@ namespace raintrace::render {
 
 // A contiguous run of frames (one POV-Ray process renders one), the scene variant it renders
 // and the final image names: the output folder's layout (output/layout.h).
+using output::developed_image_name;
 using output::final_image_name;
 using output::FrameSpan;
 using output::Pass;
 
-/// Where POV-Ray writes a picture first ("images/.tmp/frame_0007.png"); renamed to its
-/// final_image_name only once verified.
+/// Where POV-Ray writes a picture first ("images/.tmp/frame_0007.exr", "images/.tmp/
+/// mask_0007.png"); renamed to its final_image_name only once verified.
 std::string temp_image_name(Pass pass, int frame, int digits = 4);
+/// Where develop writes a frame's PNG first ("images/.tmp/frame_0007.png"); renamed to its
+/// developed_image_name only once verified.
+std::string temp_developed_name(int frame, int digits = 4);
 /// The folder of temp_image_name, relative to the output folder.
 std::string temp_dir_name();
 
 /// argv for `povray` rendering `span` of the folder's animation. Runs with the output folder as
 /// working directory (relative includes resolve there, +L. adds it to the library path):
-///   povray scene.ini -D +FN -V -GR +L. +Oimages/.tmp/frame_.png +KFI1 +KFF9999 +SFa +EFb
+///   povray scene.ini -D +FE -V -GR +L. +Oimages/.tmp/frame_.exr +KFI1 +KFF9999 +SFa +EFb
+///   povray mask.ini -D +FN -V -GR +L. +Oimages/.tmp/mask_.png …
+/// +FE: half-float OpenEXR, scene-linear (as scene.ini says); masks stay PNG (data, not light).
 /// -D: headless; -V -GR: quiet but keeps POV-Ray's "File '…' line N:" error lines (POVRAY-NOTES);
 /// +KFI1 +KFF9999 (as many nines as `digits`) keep frame_number and the zero-padded names
 /// identical to the ini's whole animation.
 std::vector<std::string> povray_argv(Pass pass, const FrameSpan& span, int digits = 4);
 
-/// Where POV-Ray writes the environment plate first ("images/.tmp/environment_plate.png").
+/// Where POV-Ray writes the environment plate first ("images/.tmp/environment_plate.exr").
 std::string environment_plate_temp_name();
 
 /// argv for `povray` rendering the folder's environment plate (plate.ini, one still image) into
 /// environment_plate_temp_name(), with the output folder as working directory like
 /// povray_argv:
-///   povray plate.ini -D +FN -V -GR +L. +Oimages/.tmp/environment_plate.png
+///   povray plate.ini -D +FE -V -GR +L. +Oimages/.tmp/environment_plate.exr
 std::vector<std::string> environment_plate_argv();
 
 /// Environment for POV-Ray: HOME = out_dir, where prepare_povray_home() put an empty

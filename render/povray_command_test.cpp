@@ -8,8 +8,8 @@ namespace {
 
 TEST(PovArgv, RendersASpanOfTheWholeAnimationHeadlessIntoTheTempFolder) {
   const auto argv = povray_argv(Pass::image, {9, 16});
-  const std::vector<std::string> expected{"povray", "scene.ini", "-D",   "+FN",
-                                          "-V",     "-GR",       "+L.",  "+Oimages/.tmp/frame_.png",
+  const std::vector<std::string> expected{"povray", "scene.ini", "-D",   "+FE",
+                                          "-V",     "-GR",       "+L.",  "+Oimages/.tmp/frame_.exr",
                                           "+KFI1",  "+KFF9999",  "+SF9", "+EF16"};
   EXPECT_EQ(argv, expected);
 }
@@ -17,6 +17,7 @@ TEST(PovArgv, RendersASpanOfTheWholeAnimationHeadlessIntoTheTempFolder) {
 TEST(PovArgv, MaskPassUsesMaskIniAndMaskNames) {
   const auto argv = povray_argv(Pass::mask, {1, 1});
   EXPECT_EQ(argv[1], "mask.ini");
+  EXPECT_EQ(argv[3], "+FN");  // a mask is data, not light: PNG
   EXPECT_NE(std::find(argv.begin(), argv.end(), "+Oimages/.tmp/mask_.png"), argv.end());
 }
 
@@ -24,21 +25,24 @@ TEST(PovArgv, FinalFrameHasAsManyNinesAsTheFileNamesHaveDigits) {
   // 12 000 frames → 5-digit names; Final_Frame 99999 makes POV-Ray pad to 5 as well.
   const auto argv = povray_argv(Pass::image, {10000, 10010}, 5);
   EXPECT_NE(std::find(argv.begin(), argv.end(), "+KFF99999"), argv.end());
-  EXPECT_EQ(final_image_name(Pass::image, 10000, 5), "images/frame_10000.png");
-  EXPECT_EQ(temp_image_name(Pass::image, 7, 5), "images/.tmp/frame_00007.png");
+  EXPECT_EQ(final_image_name(Pass::image, 10000, 5), "images/frame_10000.exr");
+  EXPECT_EQ(developed_image_name(10000, 5), "images/frame_10000.png");
+  EXPECT_EQ(temp_image_name(Pass::image, 7, 5), "images/.tmp/frame_00007.exr");
+  EXPECT_EQ(temp_developed_name(7, 5), "images/.tmp/frame_00007.png");
 }
 
 TEST(PovArgv, EnvironmentPlateIsOneStillFromPlateIniIntoTheTempFolder) {
   const std::vector<std::string> expected{
-      "povray", "plate.ini", "-D",  "+FN",
-      "-V",     "-GR",       "+L.", "+Oimages/.tmp/environment_plate.png"};
+      "povray", "plate.ini", "-D",  "+FE",
+      "-V",     "-GR",       "+L.", "+Oimages/.tmp/environment_plate.exr"};
   EXPECT_EQ(environment_plate_argv(), expected);
-  EXPECT_EQ(environment_plate_temp_name(), "images/.tmp/environment_plate.png");
+  EXPECT_EQ(environment_plate_temp_name(), "images/.tmp/environment_plate.exr");
 }
 
 TEST(ImageNames, AreFourDigitLikeScenesFinalFrame9999) {
-  EXPECT_EQ(final_image_name(Pass::image, 7), "images/frame_0007.png");
-  EXPECT_EQ(temp_image_name(Pass::image, 12), "images/.tmp/frame_0012.png");
+  EXPECT_EQ(final_image_name(Pass::image, 7), "images/frame_0007.exr");
+  EXPECT_EQ(developed_image_name(7), "images/frame_0007.png");
+  EXPECT_EQ(temp_image_name(Pass::image, 12), "images/.tmp/frame_0012.exr");
   EXPECT_EQ(final_image_name(Pass::mask, 123), "images/mask_0123.png");
 }
 

@@ -118,9 +118,10 @@ class Runner {
  private:
   bool stop_requested() const { return m_settings.stop != nullptr && m_settings.stop->load(); }
 
-  // Room one more image needs at most: an uncompressed 16-bit RGBA PNG, plus its log.
+  // Room one more frame needs at most: an uncompressed half-float RGBA EXR (8 bytes a pixel),
+  // its developed 8-bit PNG (3), plus its log.
   [[nodiscard]] std::uint64_t image_bytes() const {
-    return static_cast<std::uint64_t>(m_settings.width) * m_settings.height * 8 + 65536;
+    return static_cast<std::uint64_t>(m_settings.width) * m_settings.height * 11 + 65536;
   }
 
   Running start(const RenderJob& job) {
@@ -146,14 +147,19 @@ class Runner {
     return r;
   }
 
-  // Promotes consecutive finished frames from next_frame on. POV-Ray writes a frame's PNG in one
-  // go after tracing it, so "decodes completely" means "finished".
+  // Promotes consecutive finished frames from next_frame on. POV-Ray writes a frame's image in
+  // one go after tracing it, so "decodes completely" means "finished".
   void promote_ready(Running& r) {
     while (r.next_frame <= r.job.span.last) {
       const auto temp = m_out / temp_image_name(r.job.pass, r.next_frame, m_settings.digits);
       if (!output::image_is_complete(temp, m_settings.width, m_settings.height)) return;
       const auto final_path = m_out / final_image_name(r.job.pass, r.next_frame, m_settings.digits);
       std::filesystem::create_directories(final_path.parent_path());
+      if (r.job.pass == Pass::image) {
+        // The PNG developed from the EXR being replaced goes first: no PNG ever stands beside
+        // an EXR it was not developed from.
+        std::filesystem::remove(m_out / developed_image_name(r.next_frame, m_settings.digits));
+      }
       std::filesystem::rename(temp, final_path);
       const double seconds = seconds_since(r.since);
       r.since = Clock::now();

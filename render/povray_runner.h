@@ -28,6 +28,9 @@ struct FrameFailure {
   int exit_code = 0;                     ///< POV-Ray's exit code (128 + signal when killed)
   std::vector<std::string> error_lines;  ///< POV-Ray's own error lines from the log
   std::string log;                       ///< the log file, relative to the output folder
+  /// POV-Ray made the EXR, but developing it into the PNG failed (error_lines says why;
+  /// command, exit_code and log are empty).
+  bool in_develop = false;
   /// One line: the error lines joined, or why the image was rejected.
   std::string summary() const;
 };

@@ -12,7 +12,8 @@ struct RenderProgress {
   /// this counts every frame not yet exported as one to render, and drops as exported frames
   /// turn out to be up to date.
   int total = 0;
-  int done = 0;  ///< rendered so far in this run
+  int done = 0;            ///< rendered (and developed) so far in this run, developed_only included
+  int developed_only = 0;  ///< frames whose EXR was current: developed without POV-Ray
   int failed = 0;
   int skipped = 0;  ///< frames already up to date before the run
   double elapsed_seconds = 0.0;

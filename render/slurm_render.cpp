@@ -3,6 +3,7 @@
 
 #include <fmt/core.h>
 #include <chrono>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -13,6 +14,7 @@
 #include "output/folder_lock.h"
 #include "output/image_check.h"
 #include "povgen/output_folder.h"
+#include "render/develop_queue.h"
 #include "render/environment_plate.h"
 #include "render/process.h"
 #include "render/spans.h"
@@ -38,6 +40,10 @@ std::string result_name(Pass pass, int frame) {
   return fmt::format("{}_{:04d}.json", output::pass_prefix(pass), frame);
 }
 
+// A task's develop result for a frame, written after its render result.
+std::string develop_result_name(int frame) { return fmt::format("develop_{:04d}.json", frame); }
+constexpr const char* kDevelopPrefix = "develop_";
+
 json spans_to_json(const std::vector<FrameSpan>& spans) {
   json a = json::array();
   for (const auto& s : spans) a.push_back({s.first, s.last});
@@ -57,41 +63,89 @@ std::string shell_single_quote(const std::string& s) {
 }
 
 // Result files as written by tasks, turned into the same events the local runner reports, so the
-// folder's transitions and the progress are recorded by the same callbacks.
+// folder's transitions and the progress are recorded by the same callbacks. A frame's develop
+// result counts only when the task developed it with this run's develop hash from the EXR now
+// recorded; otherwise (or when the task could not develop) `develop_here` gets the frame and
+// this machine develops it.
 struct Merger {
-  const FolderState& folder;
+  FolderState& folder;
   const RunnerCallbacks& callbacks;
+  ProgressReporter* reporter = nullptr;   // null: results of an earlier run, not counted
+  std::function<void(int)> develop_here;  // null: leave undeveloped frames to the sweep
 
-  // Returns the number of result files consumed.
+  // Returns the number of result files consumed: render results first, so a frame's develop
+  // result (written after it) finds its EXR recorded.
   int merge_all() {
     const auto& out = folder.dir();
     std::error_code ec;
     if (!std::filesystem::is_directory(results_dir(out), ec)) return 0;
-    const auto& identity = folder.manifest().identity;
-    int consumed = 0;
+    std::vector<std::filesystem::path> renders;
+    std::vector<std::filesystem::path> develops;
     for (const auto& entry : std::filesystem::directory_iterator(results_dir(out))) {
       const auto name = entry.path().filename().string();
       if (name.empty() || name[0] == '.' || entry.path().extension() != ".json") continue;
+      (name.rfind(kDevelopPrefix, 0) == 0 ? develops : renders).push_back(entry.path());
+    }
+    int consumed = 0;
+    for (const auto& path : renders) consumed += merge_render(path);
+    for (const auto& path : develops) consumed += merge_develop(path);
+    return consumed;
+  }
+
+  int merge_develop(const std::filesystem::path& path) {
+    json r;
+    try {
+      r = json::parse(read_text(path));
+    } catch (const json::exception&) {
+      return 0;  // renamed into place atomically, so this is not ours: leave it
+    }
+    std::filesystem::remove(path);
+    const int frame = r.value("frame", 0);
+    const auto* f = folder.find(frame);
+    if (f == nullptr || r.value("hash", "") != f->input_hash ||
+        folder.decide(Pass::image, frame, false) != output::RenderReason::up_to_date) {
+      return 1;  // stale: the frame was exported or rendered again since
+    }
+    const auto& id = folder.manifest().identity;
+    if (r.value("status", "") == "developed" &&
+        r.value("develop_hash", "") == folder.develop_hash() &&
+        r.value("source_hash", "") == f->image.file_hash &&
+        output::image_is_complete(folder.dir() / developed_image_name(frame, folder.digits()),
+                                  id.width, id.height)) {
+      folder.developed(frame, r.value("seconds", 0.0));
+      if (reporter != nullptr) {
+        ++reporter->progress().done;
+        reporter->report();
+      }
+    } else if (develop_here) {
+      develop_here(frame);
+    }
+    return 1;
+  }
+
+  int merge_render(const std::filesystem::path& path) {
+    const auto& out = folder.dir();
+    const auto& identity = folder.manifest().identity;
+    {
       json r;
       try {
-        r = json::parse(read_text(entry.path()));
+        r = json::parse(read_text(path));
       } catch (const json::exception&) {
-        continue;  // renamed into place atomically, so this is not ours: leave it
+        return 0;  // renamed into place atomically, so this is not ours: leave it
       }
       const int frame = r.value("frame", 0);
       const Pass pass = r.value("pass", "frame") == "mask" ? Pass::mask : Pass::image;
       const auto* f = folder.find(frame);
-      std::filesystem::remove(entry.path());
-      ++consumed;
+      std::filesystem::remove(path);
       // A result made from other inputs than the manifest now names is stale: ignore it.
-      if (f == nullptr || r.value("hash", "") != f->input_hash) continue;
+      if (f == nullptr || r.value("hash", "") != f->input_hash) return 1;
       if (r.value("status", "") == "rendered") {
         // Verified by the task before it was renamed into place; checked again here, since
         // the result may be from a run long gone.
         if (output::image_is_complete(out / final_image_name(pass, frame, folder.digits()),
                                       identity.width, identity.height)) {
           callbacks.on_rendered(pass, frame, r.value("seconds", 0.0));
-          continue;
+          return 1;
         }
       }
       FrameFailure failure;
@@ -104,7 +158,7 @@ struct Merger {
       if (failure.error_lines.empty()) failure.error_lines = {"the rendered image is not complete"};
       callbacks.on_failed(failure);
     }
-    return consumed;
+    return 1;
   }
 };
 
@@ -153,10 +207,15 @@ RenderSummary render_slurm(FolderState& folder, const SlurmRenderSettings& setti
     throw std::runtime_error(
         "Slurm not found (sbatch/squeue): install slurm-client or use --backend local");
   }
+  // This machine develops what the nodes could not (and frames whose EXR is all they lack).
+  const auto display = prepare_develop(folder);
   RenderSummary summary;
   ProgressReporter reporter{settings.on_progress};
   auto& progress = reporter.progress();
-  const RunnerCallbacks callbacks = folder_callbacks(folder, reporter, summary, settings.on_failed);
+  DevelopQueue developer{out_dir, develop_target(folder.manifest()), *display, settings.stop};
+  // Nodes develop their own frames: a rendered frame waits for its task's develop result.
+  RunnerCallbacks callbacks =
+      folder_callbacks(folder, reporter, summary, settings.on_failed, nullptr);
   auto status = [&](const std::string& text) {
     if (settings.on_status) settings.on_status(text);
   };
@@ -164,20 +223,30 @@ RenderSummary render_slurm(FolderState& folder, const SlurmRenderSettings& setti
     // Results of an earlier, interrupted submission count before planning.
     RenderSummary earlier;
     ProgressReporter quiet{nullptr};
-    const RunnerCallbacks record = folder_callbacks(folder, quiet, earlier, nullptr);
-    Merger{folder, record}.merge_all();
+    const RunnerCallbacks record = folder_callbacks(folder, quiet, earlier, nullptr, nullptr);
+    Merger{folder, record, nullptr, nullptr}.merge_all();
   }
   clean_temp_images(out_dir);
   const output::RenderPlan plan = folder.plan({settings.force, settings.only});
   if (settings.on_plan) settings.on_plan(plan);
-  progress.total = static_cast<int>(plan.images.size() + plan.masks.size());
+  progress.total = static_cast<int>(plan.images.size() + plan.masks.size() + plan.develops.size());
   progress.skipped = plan.up_to_date;
+  for (const int frame : plan.develops) developer.submit(frame, true);
   auto finish = [&] {
+    // Frames whose EXR is current and whose PNG is not (a node without blender-data, a task
+    // that died between render and develop): developed here.
+    for (const auto& f : folder.manifest().frames) {
+      if (plan.develops.end() != std::find(plan.develops.begin(), plan.develops.end(), f.number))
+        continue;
+      if (output::needs_develop(folder.decide_develop(f.number))) developer.submit(f.number);
+    }
+    finish_developing(developer, folder, reporter, summary, settings.on_failed);
+    if (settings.stop != nullptr && settings.stop->load()) summary.interrupted = true;
     reporter.report();
     summary.progress = progress;
     return summary;
   };
-  if (progress.total == 0) return finish();
+  if (plan.images.empty() && plan.masks.empty()) return finish();
   const auto& identity = folder.manifest().identity;
   {
     // Array tasks may start POV-Ray as soon as the job is submitted, so the plate is finished
@@ -209,9 +278,12 @@ RenderSummary render_slurm(FolderState& folder, const SlurmRenderSettings& setti
   std::filesystem::remove_all(results_dir(out_dir));
   std::filesystem::create_directories(results_dir(out_dir));
   // The run id proves to each task that it works for the run holding the folder's lock.
-  povgen::write_file_atomic(
-      out_dir / "slurm" / "plan.json",
-      json{{"run_id", folder.holder().run_id}, {"tasks", plan_tasks}}.dump(1) + "\n");
+  povgen::write_file_atomic(out_dir / "slurm" / "plan.json",
+                            json{{"run_id", folder.holder().run_id},
+                                 {"develop_hash", folder.develop_hash()},
+                                 {"tasks", plan_tasks}}
+                                    .dump(1) +
+                                "\n");
   const auto script = out_dir / "slurm" / "render.sbatch";
   povgen::write_file_atomic(script, sbatch_script(out_dir, settings.raintrace_exe, tasks));
   prepare_povray_home(out_dir);
@@ -234,7 +306,7 @@ RenderSummary render_slurm(FolderState& folder, const SlurmRenderSettings& setti
   status(fmt::format("submitted Slurm job {} ({} array tasks); logs in {}/logs/", job_id, tasks,
                      out_dir.string()));
 
-  Merger merger{folder, callbacks};
+  Merger merger{folder, callbacks, &reporter, [&developer](int f) { developer.submit(f); }};
   for (;;) {
     if (settings.stop != nullptr && settings.stop->load()) {
       ProcessSpec cancel;
@@ -247,6 +319,7 @@ RenderSummary render_slurm(FolderState& folder, const SlurmRenderSettings& setti
     }
     const bool active = job_active(job_id);
     merger.merge_all();
+    record_developed(folder, reporter, summary, developer.take(), settings.on_failed);
     reporter.report();
     if (!active) break;
     std::this_thread::sleep_for(std::chrono::duration<double>(settings.poll_seconds));
@@ -317,11 +390,62 @@ int run_slurm_task(const std::filesystem::path& out_dir_in, int task_index,
     result["run_id"] = run_id;
     povgen::write_file_atomic(results_dir(out_dir) / result_name(pass, frame), result.dump());
   };
+  // Each task develops its own frames, on a thread beside its POV-Ray, when this node's
+  // blender-data develops them exactly as the submitting machine would (same develop hash);
+  // otherwise the submitting machine develops them after the job.
+  const DevelopTarget target = develop_target(manifest);
+  std::unique_ptr<film::DisplayTransform> display;
+  std::string cannot_develop;
+  try {
+    display = std::make_unique<film::DisplayTransform>();
+    const std::string here =
+        output::develop_hash(manifest.develop, manifest.identity.seed,
+                             display->response(target.settings.view, target.settings.look));
+    if (here != plan.value("develop_hash", "")) {
+      cannot_develop =
+          "this node's blender-data or OpenColorIO develops other pictures than the "
+          "submitting machine's";
+    }
+  } catch (const std::runtime_error& e) {
+    cannot_develop = e.what();
+  }
+  std::unique_ptr<DevelopQueue> developer;
+  if (cannot_develop.empty()) {
+    developer = std::make_unique<DevelopQueue>(out_dir, target, *display, stop);
+  }
+  auto write_develop_result = [&](const DevelopResult& d) {
+    json result{{"frame", d.frame},
+                {"hash", hash_of[d.frame]},
+                {"run_id", run_id},
+                {"status", d.error.empty() ? "developed" : "failed"},
+                {"seconds", d.seconds},
+                {"error", d.error},
+                {"develop_hash", plan.value("develop_hash", "")}};
+    const auto exr =
+        output::file_facts(out_dir / final_image_name(Pass::image, d.frame, target.digits));
+    result["source_hash"] = exr ? exr->hash : "";
+    povgen::write_file_atomic(results_dir(out_dir) / develop_result_name(d.frame), result.dump());
+  };
+  int developed = 0;
+  auto write_develop_results = [&] {
+    if (developer == nullptr) return;
+    for (const DevelopResult& d : developer->take()) {
+      developed += d.error.empty() ? 1 : 0;
+      write_develop_result(d);
+    }
+  };
   RunnerCallbacks callbacks;
   callbacks.on_started = [&](const RenderJob&) { output::require_lock_held_by(out_dir, run_id); };
   callbacks.on_rendered = [&](Pass pass, int frame, double seconds) {
     write_result(pass, frame, {{"status", "rendered"}, {"seconds", seconds}});
+    if (pass != Pass::image) return;
+    if (developer != nullptr) {
+      developer->submit(frame);
+    } else {
+      write_develop_result({frame, false, 0.0, cannot_develop});
+    }
   };
+  callbacks.on_tick = write_develop_results;
   callbacks.on_failed = [&](const FrameFailure& failure) {
     all_ok = false;
     write_result(failure.pass, failure.frame,
@@ -333,6 +457,15 @@ int run_slurm_task(const std::filesystem::path& out_dir_in, int task_index,
                   {"error", failure.summary()}});
   };
   const bool finished = run_povray_jobs(out_dir, std::move(jobs), runner, callbacks);
+  while (developer != nullptr && !developer->idle()) {
+    write_develop_results();
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  write_develop_results();
+  // In the task's Slurm log (logs/slurm_JOB_TASK.out), for whoever wonders where frames went.
+  std::fprintf(stderr, "raintrace Slurm task %d: %d frames developed here%s%s\n", task_index,
+               developed,
+               cannot_develop.empty() ? "" : "; not developed here: ", cannot_develop.c_str());
   return finished && all_ok ? 0 : 1;
 }
 

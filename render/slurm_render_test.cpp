@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 #include <cstdlib>
+#include <fstream>
+#include <sstream>
 
 #include "output/folder_state.h"
 #include "output/image_check.h"
@@ -29,6 +31,13 @@ RenderSummary render_slurm(const std::filesystem::path& dir, const SlurmRenderSe
 RenderSummary render_local(const std::filesystem::path& dir, const LocalRenderSettings& s) {
   auto folder = output::FolderState::open(dir, "test");
   return render::render_local(folder, s);
+}
+
+std::string read_bytes(const std::filesystem::path& path) {
+  std::ifstream in{path, std::ios::binary};
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
 }
 
 TEST(ShareFrames, SplitsIntoNearlyEqualContiguousShares) {
@@ -123,9 +132,44 @@ TEST_F(SlurmRender, JobArrayRendersTheSamePixelsAsLocal) {
     EXPECT_FALSE(cmp.error) << f.image.path;
     EXPECT_EQ(cmp.nfail, 0U) << f.image.path;
     EXPECT_EQ(cmp.maxerror, 0.0) << f.image.path;
+    // Each task developed its own frames, byte for byte as the local run did.
+    EXPECT_FALSE(f.developed.develop_hash.empty()) << f.number;
+    EXPECT_EQ(f.developed.source_hash, f.image.file_hash) << f.number;
+    EXPECT_TRUE(read_bytes(dir / "local" / f.developed.path) ==
+                read_bytes(dir / "slurm" / f.developed.path))
+        << f.developed.path;
   }
+  EXPECT_EQ(summary.progress.developed_only, 0);
+  int developed_on_nodes = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "slurm/logs")) {
+    if (entry.path().filename().string().rfind("slurm_", 0) != 0) continue;
+    const std::string log = read_bytes(entry.path());
+    const auto at = log.find(" frames developed here");
+    if (at == std::string::npos) continue;
+    developed_on_nodes += std::stoi(log.substr(log.rfind(' ', at - 1) + 1));
+  }
+  EXPECT_EQ(developed_on_nodes, 6);
   // A second submission finds nothing to do and submits nothing.
   EXPECT_EQ(render_slurm(dir / "slurm", settings).progress.total, 0);
+}
+
+TEST_F(SlurmRender, FramesWhosePngIsAllTheyLackAreDevelopedHereWithoutAJob) {
+  const auto dir = testing::fresh_test_dir("slurm_develop_here");
+  testing::write_test_folder(dir / "out", {.frames = 3});
+  LocalRenderSettings local;
+  ASSERT_TRUE(render_local(dir / "out", local).failures.empty());
+  const auto png = dir / "out" / developed_image_name(2);
+  const std::string bytes = read_bytes(png);
+  std::filesystem::remove(png);
+  SlurmRenderSettings settings;
+  settings.raintrace_exe = RAINTRACE_BINARY;
+  bool submitted = false;
+  settings.on_status = [&](const std::string& s) { submitted |= s.rfind("submitted", 0) == 0; };
+  const auto summary = render_slurm(dir / "out", settings);
+  EXPECT_TRUE(summary.failures.empty());
+  EXPECT_FALSE(submitted);
+  EXPECT_EQ(summary.progress.developed_only, 1);
+  EXPECT_TRUE(read_bytes(png) == bytes);
 }
 
 TEST_F(SlurmRender, EnvironmentPlateIsFinishedBeforeTheArrayIsSubmitted) {
@@ -148,6 +192,7 @@ TEST_F(SlurmRender, EnvironmentPlateIsFinishedBeforeTheArrayIsSubmitted) {
   EXPECT_EQ(summary.progress.done, 2);
   EXPECT_TRUE(plate_before_submission);
   for (const auto& s : statuses) EXPECT_EQ(s.find("environment plate"), std::string::npos) << s;
+  EXPECT_TRUE(image_is_complete(dir / "out/images/frame_0002.exr", 64, 36));
   EXPECT_TRUE(image_is_complete(dir / "out/images/frame_0002.png", 64, 36));
 }
 

@@ -46,8 +46,8 @@ std::string frame_text(int frame, int spheres) {
 // into the plate, and a scene.inc that puts the plate on a screen filling the view.
 void write_plate_files(const std::filesystem::path& dir, const TestFolderSpec& spec) {
   write_file(dir / "plate.ini", fmt::format("Input_File_Name=plate.pov\nWidth={}\nHeight={}\n"
-                                            "Output_File_Name=textures/environment_plate.png\n"
-                                            "Output_File_Type=N\nAntialias=off\nQuality=9\n"
+                                            "Output_File_Name=textures/environment_plate.exr\n"
+                                            "Output_File_Type=E\nAntialias=off\nQuality=9\n"
                                             "Library_Path=.\n",
                                             spec.width, spec.height));
   write_file(dir / "plate.pov",
@@ -63,9 +63,9 @@ void write_plate_files(const std::filesystem::path& dir, const TestFolderSpec& s
       dir / "scene.inc",
       read_text(dir / "scene.inc") +
           fmt::format("#declare RT_PlateUsed = false;\n"
-                      "#if (!RT_Mask & file_exists(\"textures/environment_plate.png\"))\n"
-                      "  #declare RT_Plate = pigment {{ image_map {{ png "
-                      "\"textures/environment_plate.png\" }} }};\n"
+                      "#if (!RT_Mask & file_exists(\"textures/environment_plate.exr\"))\n"
+                      "  #declare RT_Plate = pigment {{ image_map {{ exr "
+                      "\"textures/environment_plate.exr\" }} }};\n"
                       "  #declare RT_PlateSize = max_extent(RT_Plate);\n"
                       "  #declare RT_PlateUsed = (RT_PlateSize.x = {} & RT_PlateSize.y = {});\n"
                       "#end\n"
@@ -121,6 +121,7 @@ void write_test_folder(const std::filesystem::path& dir, const TestFolderSpec& s
     entry.number = f;
     entry.image.scene = output::frame_scene_name(output::Pass::image, f);
     entry.image.path = output::final_image_name(output::Pass::image, f);
+    entry.developed.path = output::developed_image_name(f);
     entry.input_hash = povgen::content_hash(text);
     write_file(dir / entry.image.scene, text);
     if (spec.masks) {

@@ -18,7 +18,7 @@ struct TestFolderSpec {
   /// exporter does for a scene exported with masks.
   bool masks = false;
   /// Also write plate.ini, plate.pov and environment.inc as the preview exporter does: scene.inc
-  /// then draws textures/environment_plate.png when it is there at width×height, and otherwise
+  /// then draws textures/environment_plate.exr when it is there at width×height, and otherwise
   /// includes environment.inc. Each frame says which in its log (#debug): "raintrace:
   /// environment plate used" or "raintrace: full environment".
   bool plate = false;

@@ -1,6 +1,7 @@
-// Every example in examples/ exported (frame 1) and rendered by the real POV-Ray at 64×36:
-// the image is not blank, and it differs from the same scene without rain (rain.rate 0), so
-// the rain really reaches the picture. Label `povray`; skipped when povray is missing.
+// Every example in examples/ exported (frame 1), rendered by the real POV-Ray at 64×36 and
+// developed as `raintrace render` develops it (the scene's [camera] develop keys): the picture
+// is not blank, and it differs from the same scene without rain (rain.rate 0), so the rain
+// really reaches the picture. Label `povray`; skipped when povray is missing.
 // To stay within the test budget the simulation skips its prewarm (World fills the volume at
 // steady-state density before it, so frame 1 is already full of rain) and uses 10 ms substeps.
 #include <OpenImageIO/imageio.h>
@@ -14,6 +15,7 @@
 
 #include "cli/folder_run.h"
 #include "cli/scene.h"
+#include "film/develop.h"
 #include "output/budget.h"
 #include "output/export.h"
 #include "output/folder_state.h"
@@ -43,8 +45,8 @@ std::vector<float> read_rgb(const fs::path& path) {
   return px;
 }
 
-/// Exports frame 1 of the scene at 64×36 into dir and renders it (with extra POV-Ray options);
-/// returns the pixels.
+/// Exports frame 1 of the scene at 64×36 into dir, renders it (with extra POV-Ray options) and
+/// develops it; returns the developed pixels.
 std::vector<float> export_and_render(cli::Scene scene, const fs::path& dir,
                                      const std::string& options = "") {
   scene.look.width = 64;
@@ -56,13 +58,15 @@ std::vector<float> export_and_render(cli::Scene scene, const fs::path& dir,
   fs::remove_all(dir);
   {
     const output::SceneToExport e = cli::scene_to_export(scene);
-    auto folder =
-        output::FolderState::claim(dir, output::identity_of(scene.text, e), false, "test");
+    auto folder = cli::claim_folder(dir, scene, e, false, nullptr);
     output::export_frames(folder, e, {1, 1});
   }
   const std::string command = "cd '" + dir.string() + "' && povray scene.ini +SF1 +EF1 -D -V " +
                               options + " >povray.log 2>&1";
   EXPECT_EQ(std::system(command.c_str()), 0) << "povray failed in " << dir;
+  static const film::DisplayTransform display;
+  film::develop_file(dir / "images" / "frame_0001.exr", dir / "images" / "frame_0001.png",
+                     scene.develop, {scene.look.camera.fov_deg, scene.sim.seed, 1}, display);
   return read_rgb(dir / "images" / "frame_0001.png");
 }
 
@@ -113,8 +117,8 @@ TEST_P(ExampleRender, RendersRainThatChangesThePicture) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, ExampleRender, ::testing::ValuesIn(examples()),
-                         [](const ::testing::TestParamInfo<fs::path>& info) {
-                           return info.param.stem().string();
+                         [](const ::testing::TestParamInfo<fs::path>& test) {
+                           return test.param.stem().string();
                          });
 
 }  // namespace

@@ -1,6 +1,7 @@
 // The output folder as a user meets it, end to end through the `raintrace` program: two runs on
 // one folder, another scene, a shorter scene, a folder raintrace did not make, images damaged
-// between runs, and Ctrl-C in the middle of a long prewarm. Each case ends with the folder equal
+// between runs, Ctrl-C in the middle of a long prewarm, develop-only edits, a folder rendered
+// by hand, and a develop killed halfway. Each case ends with the folder equal
 // to a clean render of the same scene (frame files byte for byte, images pixel for pixel).
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -10,6 +11,11 @@
 #include <fstream>
 #include <thread>
 
+#include <OpenImageIO/imageio.h>
+
+#include <map>
+
+#include "output/image_check.h"
 #include "output/manifest.h"
 #include "render/povray_command.h"
 #include "render/process.h"
@@ -83,7 +89,8 @@ TEST_F(PovrayFolderCli, ASecondRunOnTheSameFolderStopsAtOnceNamingTheFirst) {
 TEST_F(PovrayFolderCli, AnotherSceneIsRefusedAndForceReplacesItWithACleanRender) {
   const auto dir = testing::fresh_test_dir("cli_other_scene");
   const auto light = write_scene(dir, 4, "light.toml", 7);
-  const auto other = write_scene(dir, 4, "other.toml", 8);
+  // Another scene: other rain (the seed alone would be "this scene with other settings").
+  const auto other = write_scene(dir, 4, "other.toml", 7, "[export]\nsphere_distance_m = 1\n");
   ASSERT_EQ(run_raintrace({"render", light.string(), "-o", (dir / "out").string()}, dir / "a.log")
                 .exit_code,
             0);
@@ -115,9 +122,11 @@ TEST_F(PovrayFolderCli, AShorterSceneLeavesNoFrameOfTheLongerOne) {
   ASSERT_EQ(run_raintrace({"render", longer.string(), "-o", (dir / "out").string()}, dir / "a.log")
                 .exit_code,
             0);
+  // Only [output] frames differs: the same scene (a frame does not depend on the frames after
+  // it), so no --force is needed.
   const auto shorter = write_scene(dir / "short", 3, "scene.toml");
-  const auto r = run_raintrace(
-      {"render", shorter.string(), "-o", (dir / "out").string(), "--force"}, dir / "b.log");
+  const auto r =
+      run_raintrace({"render", shorter.string(), "-o", (dir / "out").string()}, dir / "b.log");
   EXPECT_EQ(r.exit_code, 0) << r.output;
   clean_render(shorter, dir / "clean");
   expect_same_as_clean_render(dir / "out", dir / "clean");
@@ -283,6 +292,148 @@ TEST_F(PovrayFolderCli, AFullDiskStopsTheRunNamingTheCauseAndTheRunResumesWhenTh
     EXPECT_EQ(resumed.exit_code, 0) << resumed.output;
     expect_same_as_clean_render(mnt / "out", dir / "clean");
   }
+}
+
+/// `scene` with lines inserted right after its "[camera]" line.
+fs::path with_camera_keys(const fs::path& scene, const fs::path& out, const std::string& keys) {
+  std::string text = read_all(scene);
+  const auto at = text.find("[camera]\n");
+  EXPECT_NE(at, std::string::npos);
+  text.insert(at + 9, keys);
+  std::ofstream{out} << "# the same rain, developed otherwise\n" << text;
+  return out;
+}
+
+/// The develop settings a developed PNG's description names.
+std::string description_of(const fs::path& png) {
+  auto in = OIIO::ImageInput::open(png.string());
+  return in ? in->spec().get_string_attribute("ImageDescription") : "";
+}
+
+TEST_F(PovrayFolderCli, DevelopOnlyEditsDevelopEveryFrameAgainWithoutRenderingOrForce) {
+  const auto dir = testing::fresh_test_dir("cli_develop_only");
+  const auto scene = write_scene(dir, 4);
+  const std::string out = (dir / "out").string();
+  ASSERT_EQ(run_raintrace({"render", scene.string(), "-o", out}, dir / "a.log").exit_code, 0);
+  std::map<int, fs::file_time_type> exr_written;
+  for (int n = 1; n <= 4; ++n) {
+    exr_written[n] = fs::last_write_time(dir / "out" / final_image_name(Pass::image, n));
+  }
+  // A comment and four develop keys: the rendered frames stay, every PNG is developed again.
+  const auto darker =
+      with_camera_keys(scene, dir / "darker.toml",
+                       "exposure_ev = -1\nlook = \"high-contrast\"\nbloom = 0.1\nvignette = 0\n");
+  const auto r = run_raintrace({"render", darker.string(), "-o", out}, dir / "b.log");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(contains(r.output, "0 frames rendered, 4 developed only, 0 up to date")) << r.output;
+  for (int n = 1; n <= 4; ++n) {
+    EXPECT_EQ(fs::last_write_time(dir / "out" / final_image_name(Pass::image, n)), exr_written[n])
+        << "frame " << n << " was rendered again";
+    EXPECT_TRUE(contains(description_of(dir / "out" / developed_image_name(n)),
+                         "exposure_ev=-1 view=filmic look=high-contrast bloom=0.1"))
+        << n;
+  }
+  clean_render(darker, dir / "clean");
+  expect_same_as_clean_render(dir / "out", dir / "clean");
+  // The folder itself now develops with the new settings: nothing to do.
+  const auto again = run_raintrace({"render", out}, dir / "c.log");
+  EXPECT_TRUE(contains(again.output, "0 frames rendered, 4 up to date")) << again.output;
+  // A damaged PNG is developed again from its EXR, never rendered.
+  fs::resize_file(dir / "out" / developed_image_name(2), 100);
+  fs::remove(dir / "out" / developed_image_name(3));
+  const auto damaged = run_raintrace({"render", out}, dir / "d.log");
+  EXPECT_TRUE(contains(damaged.output,
+                       "0 to render; 2 to develop only: 1 picture missing, 1 picture changed"))
+      << damaged.output;
+  EXPECT_TRUE(contains(damaged.output, "0 frames rendered, 2 developed only, 2 up to date"))
+      << damaged.output;
+  expect_same_as_clean_render(dir / "out", dir / "clean");
+}
+
+TEST_F(PovrayFolderCli, AFolderRenderedByHandIsDevelopedNotRenderedAgain) {
+  // The folder contract: `povray plate.ini` and `povray scene.ini` render it without raintrace
+  // (EXRs), and `raintrace render OUT` then only develops them.
+  const auto dir = testing::fresh_test_dir("cli_by_hand");
+  const auto scene = write_scene(dir, 3);
+  const std::string out = (dir / "out").string();
+  ASSERT_EQ(run_raintrace({"export", scene.string(), "-o", out}, dir / "a.log").exit_code, 0);
+  for (const char* ini : {"plate.ini", "scene.ini"}) {
+    render::ProcessSpec povray;
+    povray.argv = {"povray", ini, "-D"};
+    povray.working_dir = dir / "out";
+    povray.env = {{"HOME", out}};
+    povray.log_path = dir / "povray.log";
+    ASSERT_EQ(ChildProcess{povray}.wait(), 0) << ini << ": " << read_all(dir / "povray.log");
+  }
+  for (int n = 1; n <= 3; ++n) {
+    EXPECT_TRUE(fs::exists(dir / "out" / final_image_name(Pass::image, n))) << n;
+    EXPECT_FALSE(fs::exists(dir / "out" / developed_image_name(n))) << n;
+  }
+  const auto r = run_raintrace({"render", out}, dir / "b.log");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(contains(r.output, "0 frames rendered, 3 developed only, 0 up to date")) << r.output;
+  clean_render(scene, dir / "clean");
+  expect_same_as_clean_render(dir / "out", dir / "clean");
+}
+
+TEST_F(PovrayFolderCli, ADevelopKilledHalfwayLeavesOnlyWholePngsAndTheRunResumes) {
+  const auto dir = testing::fresh_test_dir("cli_develop_killed");
+  const int frames = 12;
+  const auto scene = write_scene(dir, frames);
+  // 640x360: each develop takes tens of milliseconds, long enough to be killed in the middle.
+  const std::vector<std::string> size{"--width", "640", "--height", "360", "--no-movie"};
+  auto args = [&](const fs::path& s) {
+    std::vector<std::string> a{"render", s.string(), "-o", (dir / "out").string()};
+    a.insert(a.end(), size.begin(), size.end());
+    return a;
+  };
+  ASSERT_EQ(run_raintrace(args(scene), dir / "a.log").exit_code, 0);
+  const auto brighter = with_camera_keys(scene, dir / "brighter.toml", "exposure_ev = 1\n");
+  ChildProcess child{raintrace_spec(args(brighter), dir / "b.log")};
+  // Killed as soon as the first PNG with the new exposure is in place.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  auto any_new = [&] {
+    for (int n = 1; n <= frames; ++n) {
+      if (contains(description_of(dir / "out" / developed_image_name(n)), "exposure_ev=1 ")) {
+        return true;
+      }
+    }
+    return false;
+  };
+  while (!any_new() && !child.poll() && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  ::kill(child.pid(), SIGKILL);
+  child.wait();
+  // Every PNG at a final name is whole, and names the settings it was developed with; nothing
+  // but EXRs and PNGs of frames is in images/ (a PNG in progress stays under images/.tmp/).
+  int developed_again = 0;
+  for (const auto& entry : fs::directory_iterator(dir / "out" / "images")) {
+    if (entry.is_directory()) continue;
+    const auto name = entry.path().filename().string();
+    EXPECT_TRUE(name.rfind("frame_", 0) == 0 &&
+                (entry.path().extension() == ".png" || entry.path().extension() == ".exr"))
+        << name;
+    EXPECT_TRUE(output::image_is_complete(entry.path(), 640, 360)) << name;
+    if (entry.path().extension() == ".png") {
+      developed_again += contains(description_of(entry.path()), "exposure_ev=1 ") ? 1 : 0;
+    }
+  }
+  EXPECT_GE(developed_again, 1);
+  const auto manifest = output::read_manifest(dir / "out" / "manifest.json");
+  for (const auto& f : manifest.frames) {
+    EXPECT_EQ(f.image.status, output::FrameStatus::rendered) << f.number;
+  }
+  const auto r = run_raintrace(args(brighter), dir / "c.log");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(contains(r.output, "0 frames rendered, ")) << r.output;
+  const auto clean = [&] {
+    std::vector<std::string> a{"render", brighter.string(), "-o", (dir / "clean").string()};
+    a.insert(a.end(), size.begin(), size.end());
+    return a;
+  }();
+  ASSERT_EQ(run_raintrace(clean, dir / "clean.log").exit_code, 0);
+  expect_same_as_clean_render(dir / "out", dir / "clean");
 }
 
 TEST(FolderCli, AHugeUnknownKeyIsCutInTheErrorLine) {

@@ -1,5 +1,6 @@
-// End-to-end: every example in examples/ is exported and rendered at 160×90 (the recipe in
-// tests/reference/render_example.sh) and compared with its reference stills in
+// End-to-end: every example in examples/ is exported, rendered at 160×90 by plain POV-Ray and
+// developed by raintrace as a render develops it (the recipe in tests/reference/
+// render_example.sh), and its developed PNGs are compared with its reference stills in
 // tests/reference/<example>/ under the thresholds in tests/reference/thresholds.json. A failing
 // case leaves the render, a difference image per frame and an HTML report in the build folder
 // and names them. References change only through `cmake --build <build> --target
@@ -116,8 +117,8 @@ TEST_P(ReferenceStills, RenderMatchesReference) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, ReferenceStills, ::testing::ValuesIn(example_names()),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                           return info.param;
+                         [](const ::testing::TestParamInfo<std::string>& test) {
+                           return test.param;
                          });
 
 }  // namespace

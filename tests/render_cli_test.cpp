@@ -93,37 +93,51 @@ TEST_F(PovrayRenderCli, MissingPovrayIsOneClearLineAndExitTwo) {
             "raintrace: error: POV-Ray not found: install it with `sudo apt-get install povray`\n");
 }
 
-// Renders 10 slow frames in the background and returns once `frames_done` are recorded.
-using FinishedImages = std::map<int, std::filesystem::file_time_type>;
+/// What a killed run left: the frames whose EXR is complete at its final name (with its
+/// modification time: the manifest records it, or the next run adopts it, since it is newer
+/// than its inputs), and how many of those the manifest records as developed too.
+struct Finished {
+  std::map<int, std::filesystem::file_time_type> exr;
+  int developed = 0;
+};
 
-/// The frames the manifest in `out` records as rendered, with their images' modification times;
-/// each of those images must be complete.
-FinishedImages finished_images(const std::filesystem::path& out) {
-  FinishedImages finished;
+Finished finished_images(const std::filesystem::path& out) {
+  Finished finished;
   for (const auto& f : read_manifest(out / "manifest.json").frames) {
-    if (f.image.status != output::FrameStatus::rendered) continue;
-    finished[f.number] = std::filesystem::last_write_time(out / f.image.path);
-    EXPECT_TRUE(image_is_complete(out / f.image.path, 64, 36)) << f.image.path;
+    if (f.image.status == output::FrameStatus::rendered) {
+      EXPECT_TRUE(image_is_complete(out / f.image.path, 64, 36)) << f.image.path;
+    }
+    if (!image_is_complete(out / f.image.path, 64, 36)) continue;
+    finished.exr[f.number] = std::filesystem::last_write_time(out / f.image.path);
+    if (f.image.status == output::FrameStatus::rendered && !f.developed.develop_hash.empty() &&
+        f.developed.source_hash == f.image.file_hash) {
+      ++finished.developed;
+      EXPECT_TRUE(image_is_complete(out / f.developed.path, 64, 36)) << f.developed.path;
+    }
   }
   return finished;
 }
 
-/// A re-run after a kill rendered exactly the frames that were not finished, left the finished
-/// images untouched, and every one of the `frames` images is now complete.
+/// A re-run after a kill rendered exactly the frames that were not finished, developed the
+/// rendered ones it had not developed, left the finished EXRs untouched, and every one of the
+/// `frames` EXRs and PNGs is now complete.
 void expect_rerun_redid_only_unfinished(const Run& rerun, const std::filesystem::path& out,
-                                        const FinishedImages& finished, int frames) {
+                                        const Finished& finished, int frames) {
   EXPECT_EQ(rerun.exit_code, 0) << rerun.output;
-  const int redo = frames - static_cast<int>(finished.size());
-  EXPECT_NE(rerun.output.find(std::to_string(redo) + " frames rendered, " +
-                              std::to_string(finished.size()) + " up to date"),
+  const int redo = frames - static_cast<int>(finished.exr.size());
+  const int develop = static_cast<int>(finished.exr.size()) - finished.developed;
+  const std::string developed = develop > 0 ? fmt::format("{} developed only, ", develop) : "";
+  EXPECT_NE(rerun.output.find(fmt::format("{} frames rendered, {}{} up to date", redo, developed,
+                                          finished.developed)),
             std::string::npos)
       << rerun.output;
-  for (const auto& [frame, mtime] : finished) {
+  for (const auto& [frame, mtime] : finished.exr) {
     EXPECT_EQ(std::filesystem::last_write_time(out / final_image_name(Pass::image, frame)), mtime)
         << "frame " << frame << " was rendered again";
   }
   for (int f = 1; f <= frames; ++f) {
     EXPECT_TRUE(image_is_complete(out / final_image_name(Pass::image, f), 64, 36)) << f;
+    EXPECT_TRUE(image_is_complete(out / developed_image_name(f), 64, 36)) << f;
   }
 }
 
@@ -147,14 +161,17 @@ TEST_F(PovrayRenderCli, SigkillHalfwayThenRerunFinishesWithoutRedoingFinishedFra
   ::kill(child->pid(), SIGKILL);
   EXPECT_EQ(child->wait(), 128 + SIGKILL);
 
-  const FinishedImages finished = finished_images(dir / "out");
-  ASSERT_GE(finished.size(), 3U);
-  ASSERT_LT(finished.size(), 10U);
-  // Whatever the killed run left at final names is complete; the rest only at temp names.
+  const Finished finished = finished_images(dir / "out");
+  ASSERT_GE(finished.exr.size(), 3U);
+  ASSERT_LT(finished.exr.size(), 10U);
+  // Whatever the killed run left at final names is complete (EXR and PNG); the rest only at
+  // temp names.
   for (int f = 1; f <= 10; ++f) {
-    const auto image = dir / "out" / final_image_name(Pass::image, f);
-    if (std::filesystem::exists(image)) {
-      EXPECT_TRUE(image_is_complete(image, 64, 36)) << f;
+    for (const auto& image :
+         {dir / "out" / final_image_name(Pass::image, f), dir / "out" / developed_image_name(f)}) {
+      if (std::filesystem::exists(image)) {
+        EXPECT_TRUE(image_is_complete(image, 64, 36)) << image;
+      }
     }
   }
 
@@ -248,9 +265,9 @@ TEST_F(PovrayRenderCli, SigkillWhileExportingAndRenderingThenRerunRedoesOnlyUnfi
       EXPECT_EQ(frame_file(dir / "out", f), frame_file(dir / "plain", f)) << "frame " << f;
     }
   }
-  const FinishedImages finished = finished_images(dir / "out");
-  ASSERT_GE(finished.size(), 2U);
-  ASSERT_LT(finished.size(), static_cast<std::size_t>(frames));
+  const Finished finished = finished_images(dir / "out");
+  ASSERT_GE(finished.exr.size(), 2U);
+  ASSERT_LT(finished.exr.size(), static_cast<std::size_t>(frames));
 
   const auto r = run_raintrace(args, dir / "log2");
   expect_rerun_redid_only_unfinished(r, dir / "out", finished, frames);

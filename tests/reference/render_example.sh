@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Renders the reference frames of one example, the one recipe shared by the reference test and
 # update.sh: a copy of the scene at 160×90, preview quality (no antialiasing, so no jitter) and
-# frames 1..N, exported with `raintrace export`, then rendered by plain `povray scene.ini` in the
-# output folder (DESIGN.md: the folder renders without raintrace). Leaves WORKDIR/out/images/.
+# frames 1..N, exported with `raintrace export`, rendered by plain `povray scene.ini` in the
+# output folder (the folder renders without raintrace: scene-linear EXRs), then developed by
+# `raintrace render OUT`, which finds the EXRs rendered and develops each into the PNG a render
+# makes. Leaves WORKDIR/out/images/ (frame_NNNN.exr and the developed frame_NNNN.png).
 # Usage: render_example.sh RAINTRACE EXAMPLE.toml WORKDIR [FRAMES=2]
 set -euo pipefail
 raintrace=$1
@@ -32,6 +34,16 @@ awk -v frames="$frames" '
 (cd "$work/out" && povray scene.ini -D +WT1 > "$work/povray.log" 2>&1) || {
   tail -20 "$work/povray.log" >&2
   echo "render_example.sh: povray failed in $work/out (log: $work/povray.log)" >&2
+  exit 1
+}
+"$raintrace" render "$work/out" --no-movie > "$work/develop.log" 2>&1 || {
+  cat "$work/develop.log" >&2
+  echo "render_example.sh: 'raintrace render' could not develop $work/out (log: $work/develop.log)" >&2
+  exit 1
+}
+grep -q "^render: 0 frames rendered" "$work/develop.log" || {
+  cat "$work/develop.log" >&2
+  echo "render_example.sh: raintrace rendered frames POV-Ray had rendered (log: $work/develop.log)" >&2
   exit 1
 }
 ls "$work/out/images/"*.png > /dev/null

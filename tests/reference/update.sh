@@ -20,6 +20,6 @@ for name in "$@"; do
   "$here/render_example.sh" "$raintrace" "$root/examples/$name.toml" "$work/$name" "$frames"
   rm -rf "$here/$name"
   mkdir -p "$here/$name"
-  cp "$work/$name/out/images/"*.png "$here/$name/"
+  cp "$work/$name/out/images/frame_"*.png "$here/$name/"   # the developed frames
 done
 echo "updated: $*  (commit tests/reference/ after reviewing the pictures)"
