@@ -61,9 +61,8 @@ std::string read_text(const fs::path& path) {
 // A fresh folder for `raintrace export` (which refuses a non-empty folder it did not make),
 // unique to this process: sessions may share the temporary directory.
 fs::path work_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("raintrace_example_figures_test_" +
-                                                    std::to_string(::getpid())) /
-                       name;
+  const fs::path dir = fs::temp_directory_path() /
+                       ("raintrace_example_figures_test_" + std::to_string(::getpid())) / name;
   fs::remove_all(dir);
   fs::create_directories(dir.parent_path());
   return dir;
