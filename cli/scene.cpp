@@ -123,6 +123,26 @@ void check_include(const TableReader& r, povgen::EnvironmentParams& environment,
   }
 }
 
+/// night_street's puddles when the scene does not say: a quarter of the road under water, what a
+/// street in steady rain shows (a choice of the look, not a measurement). Other environments
+/// have no paved ground to hold them.
+constexpr double kNightStreetPuddleCoverage = 0.25;
+
+/// The ground povgen draws: the simulation's puddles ("automatic" coverage resolved), ripples
+/// and ground height (the rain's rate it takes from look.rain).
+void resolve_ground(Scene& scene) {
+  sim::PuddleParams& puddles = scene.sim.puddles;
+  if (puddles.coverage < 0.0) {
+    const povgen::EnvironmentParams& environment = scene.look.environment;
+    const bool street = environment.include_path.empty() && environment.name == "night_street";
+    puddles.coverage = street ? kNightStreetPuddleCoverage : 0.0;
+  }
+  povgen::GroundLook& ground = scene.look.ground;
+  ground.puddles = puddles;
+  ground.ripples = scene.sim.ripples;
+  ground.ground_y_m = scene.sim.ground_y_m;
+}
+
 /// Reads one section: the rows of every table in it, then the rules that are not a range.
 void read_section(TableReader& r, Scene& scene) {
   for_each_table(scene, [&](auto table, auto& object) {
@@ -157,8 +177,10 @@ Scene load_scene_string(std::string_view toml_text, const std::string& source_na
   root.finish();
 
   scene.sim.camera.aspect = static_cast<double>(scene.look.width) / scene.look.height;
+  scene.sim.camera.width_px = scene.look.width;
   scene.look.camera = scene.sim.camera;
   scene.look.rain = scene.sim.rain;
+  resolve_ground(scene);
   return scene;
 }
 

@@ -18,8 +18,8 @@ namespace raintrace::cli {
 /// The sections of a scene file in the order they are read and documented; "" is the top
 /// level (`seed`).
 inline constexpr std::string_view kSections[] = {
-    "",          "output", "camera",      "rain",   "wind",      "splashes",
-    "lightning", "fog",    "environment", "export", "simulation"};
+    "",        "output",    "camera", "rain",        "wind",   "splashes",  "puddles",
+    "ripples", "lightning", "fog",    "environment", "export", "simulation"};
 
 /// Calls visit(table, object) for every params struct that a scene file fills: `table` a
 /// std::span of its rows, `object` the part of `scene` it fills. Within a section the rows of
@@ -35,6 +35,8 @@ void for_each_table(SceneType& scene, Visit&& visit) {
   visit(std::span<const sim::Param<sim::RainParams>>(sim::kRainParams), scene.sim.rain);
   visit(std::span<const sim::Param<sim::WindParams>>(sim::kWindParams), scene.sim.wind);
   visit(std::span<const sim::Param<sim::SplashParams>>(sim::kSplashParams), scene.sim.splashes);
+  visit(std::span<const sim::Param<sim::PuddleParams>>(sim::kPuddleParams), scene.sim.puddles);
+  visit(std::span<const sim::Param<sim::RippleParams>>(sim::kRippleParams), scene.sim.ripples);
   visit(std::span<const sim::Param<sim::LightningParams>>(sim::kLightningParams),
         scene.sim.lightning);
   visit(std::span<const sim::Param<povgen::ExportParams>>(povgen::kExportParams), scene.look);

@@ -178,16 +178,17 @@ TEST(SceneFormatDoc, ColumnsMatchTheParameterTables) {
 
 TEST(SceneFormatDoc, AddsMissingKeysAndRefusesKeysNoTableHas) {
   const std::string doc = read_text(fs::path(RAINTRACE_SOURCE_DIR) / "docs" / "scene-format.md");
-  const std::string droplets = "| `droplets` | integer | — | 4 | [0, 32] |";
+  const std::string droplets = "| `droplets` | integer | — | 32 | [0, 64] |";
   const std::size_t row = doc.find(droplets);
   ASSERT_NE(row, std::string::npos);
   // A key the doc lacks comes back at the end of its section's table, to be described.
   std::string without = doc;
   without.erase(row, doc.find('\n', row) + 1 - row);
   const std::string updated = update_scene_format_doc(without);
-  EXPECT_NE(updated.find("drops hitting the ground end in splashes |\n| `lifetime_s` | number "
-                         "| s | 0.15 | (0, 2] | how long splash droplets live |\n" +
-                         droplets + " TODO |\n\n## `[lightning]`"),
+  EXPECT_NE(updated.find("throw crown-splash droplets |\n| `lifetime_s` | number | s | 0.3 | "
+                         "(0, 2] | longest a droplet flies before it is dropped (it fades over the "
+                         "last third); most land much sooner |\n" +
+                         droplets + " TODO |\n\nWhich drops splash"),
             std::string::npos)
       << updated.substr(updated.find("## `[splashes]`"), 600);
   // A documented key that no table has is an error, not a row silently kept.

@@ -51,6 +51,7 @@ rain_rate_mm_per_h {configured, measured_at_ground}, fall_speed_by_diameter (0.1
 samples}], horizontal_velocity_m_per_s [x, z], horizontal_motion_by_frame
 [{time_s, drop_velocity_m_per_s [x, z], drop_velocity_sd_m_per_s [x, z],
 wind_m_per_s [x, z]}], splashes,
+ground {impacts, splashes, ripples, impacts_simulated, area_m2, impacts_per_m2_s},
 lightning {strikes, segments}, plus scene, seed, frame_range, time_s, raintrace_version.
 Exit codes: 0 done, 2 bad scene file or option.)";
 
@@ -130,6 +131,13 @@ nlohmann::json statistics_json(const sim::Statistics& stats, const Scene& scene,
        {stats.mean_horizontal_velocity_m_per_s[0], stats.mean_horizontal_velocity_m_per_s[1]}},
       {"horizontal_motion_by_frame", motion},
       {"splashes", stats.splashes},
+      {"ground",
+       {{"impacts", stats.ground.impacts},
+        {"splashes", stats.ground.splashes},
+        {"ripples", stats.ground.ripples},
+        {"impacts_simulated", stats.ground.impacts_simulated},
+        {"area_m2", stats.ground.area_m2},
+        {"impacts_per_m2_s", stats.ground.impacts_per_m2_s}}},
       {"lightning", {{"strikes", stats.lightning_strikes}, {"segments", stats.lightning_segments}}},
       {"scene", scene.source.string()},
       {"seed", scene.sim.seed},
@@ -198,11 +206,12 @@ int run_simulate(const SimulateArgs& args) {
   std::FILE* summary = stats_to_stdout ? stderr : stdout;
   fmt::print(summary,
              "simulated frames {}-{} of {} (seed {}): {:.0f} drops in view ({:.0f} per m3, mean "
-             "{:.2f} mm), rain {:.2f} mm/h at the ground (configured {:g}), {} splashes, {} "
-             "lightning strikes\n",
+             "{:.2f} mm), rain {:.2f} mm/h at the ground (configured {:g}), {} drops reached "
+             "the visible ground, {} splashed, {} rippled puddles, {} lightning strikes\n",
              range.first, range.last, scene.source.string(), scene.sim.seed, stats.drop_count,
              stats.number_density_per_m3, stats.mean_diameter_mm, stats.rain_rate_measured_mm_per_h,
-             stats.rain_rate_configured_mm_per_h, stats.splashes, stats.lightning_strikes);
+             stats.rain_rate_configured_mm_per_h, stats.ground.impacts, stats.ground.splashes,
+             stats.ground.ripples, stats.lightning_strikes);
   return exit_code::ok;
 }
 

@@ -131,6 +131,22 @@ TEST(SimulateCommand, DefaultExampleWritesTheStatisticsJson) {
   EXPECT_LT(drift.at(0).get<double>(), 0.8 + 1e-6);
   EXPECT_NEAR(drift.at(1).get<double>(), 0.0, 0.05);
   EXPECT_GT(json.at("splashes").get<std::uint64_t>(), 0u);
+  // The ground: drops reach it at the rain's number flux ∫N(D)·v(D) dD, 1 816 per m² and
+  // second at 5 mm/h (Marshall-Palmer from 0.5 to 6 mm, scaled to the rate: DropSizeModel),
+  // to within the noise of the far, thinned impacts over 0.08 s (10 %); most of them do not
+  // splash (65 % are under 1 mm), and a quarter land in night_street's puddles (the default
+  // coverage there) and ripple.
+  constexpr double kFlux5 = 1816.4;
+  const auto& ground = json.at("ground");
+  EXPECT_EQ(ground.at("splashes").get<std::uint64_t>(), json.at("splashes").get<std::uint64_t>());
+  const double impacts = ground.at("impacts").get<double>();
+  EXPECT_GT(impacts, 0.0);
+  EXPECT_LT(ground.at("splashes").get<double>(), 0.5 * impacts);
+  EXPECT_GT(ground.at("ripples").get<double>(), 0.1 * impacts);
+  EXPECT_LT(ground.at("ripples").get<double>(), 0.45 * impacts);
+  EXPECT_LT(ground.at("impacts_simulated").get<double>(), impacts);
+  EXPECT_GT(ground.at("area_m2").get<double>(), 100.0);
+  EXPECT_NEAR(ground.at("impacts_per_m2_s").get<double>(), kFlux5, 0.1 * kFlux5);
   EXPECT_EQ(json.at("lightning").at("strikes").get<std::uint64_t>(), 0u);
   EXPECT_EQ(json.at("lightning").at("segments").get<std::uint64_t>(), 0u);
 }

@@ -5,6 +5,7 @@
 // before they touch POV-Ray text (defence in depth).
 #pragma once
 
+#include <cstdint>
 #include <glm/vec3.hpp>
 #include <string>
 #include <string_view>
@@ -76,6 +77,18 @@ inline constexpr std::string_view kQualityNames[] = {"preview", "final"};
 inline constexpr double kPreviewStreakCoverage = 0.01;
 inline constexpr double kFinalStreakCoverage = 0.003;
 
+/// The wet ground: povgen draws the simulation's puddles (the same field, sim/puddles.h) and the
+/// ripples of each frame's impacts through templates/raintrace_ground.inc.
+struct GroundLook {
+  /// The scene's puddles, coverage resolved (<= 0: none, and the ground is drawn as before).
+  sim::PuddleParams puddles;
+  /// The scene's ripples: with the rain's rate (ExportParams::rain), the roughness the rings
+  /// give a puddle where a pixel is too coarse to draw them (sim::ripple_slope_rms()).
+  sim::RippleParams ripples;
+  /// Height of the ground plane, m (the simulation's ground_y_m).
+  double ground_y_m = 0.0;
+};
+
 struct ExportParams {
   sim::Camera camera;
   /// Diameter of the lens opening; 0 is a pinhole: everything sharp. Otherwise the camera
@@ -126,6 +139,8 @@ struct ExportParams {
   bool mask = false;
   FogParams fog;
   EnvironmentParams environment;
+  /// Not scene keys of their own: cli fills it from [puddles], [ripples] and [rain].
+  GroundLook ground;
   /// Intensity of the lightning light at full flash, relative to the environment's key light.
   double lightning_light = 8.0;
 };

@@ -13,6 +13,8 @@
 #include <string_view>
 #include <vector>
 
+#include "povgen/content_hash.h"
+#include "povgen/ground_scene.h"
 #include "povgen/number_format.h"
 #include "povgen/ordered_chunks.h"
 
@@ -395,10 +397,22 @@ void write_frame_text(const FrameValues& values, const TextSink& sink,
   const bool bolts = std::any_of(values.bolts.begin(), values.bolts.end(),
                                  [](const BoltValue& b) { return !b.segments.empty(); });
   if (bolts) out.text("#declare RT_Bolts=1;\n");
+  if (values.ground) {
+    out.text("#declare RT_RippleTime=");
+    out.number(values.time_s);
+    out.text(";\n");
+  }
+  if (!values.ripples.empty()) {
+    // The map's pixels' hash: the frame's text, and so its input hash, changes with them.
+    const std::vector<std::uint16_t> pixels = ripple_pixels(values.ripples);
+    out.text("#declare RT_RippleMap=\"" + ripple_map_name(values.index) + "\"; // " +
+             content_hash(std::string_view(reinterpret_cast<const char*>(pixels.data()),
+                                           pixels.size() * sizeof(pixels[0]))) +
+             "\n");
+  }
   out.text("#include \"scene.inc\"\n");
   write_sphere_union(out, values.drops, "RT_DropMaterial");
   write_streak_mesh(out, values.streaks, atlas);
-  write_sphere_union(out, values.splashes, "RT_SplashMaterial");
   write_bolts(out, values.bolts);
   out.flush();
 }
@@ -406,8 +420,7 @@ void write_frame_text(const FrameValues& values, const TextSink& sink,
 std::string frame_text(const FrameValues& values, const StreakAtlasLayout& atlas, int threads) {
   std::string text;
   // Typical sizes: ~190 bytes per streak, ~45 per sphere; one reservation, no regrowth.
-  text.reserve(1024 + 200 * values.streaks.size() +
-               64 * (values.drops.size() + values.splashes.size()));
+  text.reserve(1024 + 200 * values.streaks.size() + 64 * values.drops.size());
   write_frame_text(
       values, [&text](std::string_view piece) { text += piece; }, atlas, threads);
   return text;

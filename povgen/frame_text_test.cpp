@@ -28,7 +28,6 @@ TEST(FrameText, GoldenTinyFrame) {
                     glm::vec3{0.5f, 1.0f, 4.0f}, glm::vec3{0.0f, 1.0f, 4.0f}};
   streak.cell = 0;
   values.streaks.push_back(streak);
-  values.splashes.push_back({{1.0f, 0.0f, 2.0f}, 0.0005f, 1.0f});
   values.bolts.push_back({{{{0.0f, 100.0f, 50.0f}, {2.0f, 0.0f, 50.0f}, 0.5f, 1.0f}}, 0.25f});
   const std::string expected =
       "// raintrace frame 7\n"
@@ -57,11 +56,6 @@ TEST(FrameText, GoldenTinyFrame) {
       "<0,1,2>,<0,2,3>,\n"
       "}\n"
       "texture{RT_StreakTexture}\n"
-      "no_shadow hollow\n"
-      "}\n"
-      "union{\n"
-      "sphere{<1,0,2>,0.0005}\n"
-      "material{RT_SplashMaterial}\n"
       "no_shadow hollow\n"
       "}\n"
       "#if(RT_Mask=0)\n"

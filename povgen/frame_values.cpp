@@ -2,13 +2,14 @@
 #include "povgen/frame_values.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <glm/geometric.hpp>
 
 #include "povgen/drop_shape.h"
+#include "povgen/ground_scene.h"
 #include "povgen/ordered_chunks.h"
+#include "povgen/scene_files.h"
 #include "povgen/view_frustum.h"
 #include "sim/lightning.h"
 #include "sim/streak.h"
@@ -36,16 +37,6 @@ float id_unit(std::uint64_t id) {
   z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
   z ^= z >> 31;
   return static_cast<float>(z >> 40) * 0x1.0p-24f;
-}
-
-/// A number in [0, 1) for a splash droplet that stays the same over its whole flight:
-/// droplets carry no id, but gravity only changes their vertical speed, so their horizontal
-/// velocity and size identify them from frame to frame.
-float droplet_unit(const glm::vec3& velocity, float diameter) {
-  auto bits = [](float f) { return static_cast<std::uint64_t>(std::bit_cast<std::uint32_t>(f)); };
-  const std::uint64_t key =
-      bits(velocity.x) ^ (bits(velocity.z) << 32) ^ (bits(diameter) * 0x9e3779b97f4a7c15ull);
-  return id_unit(key);
 }
 
 /// Builds the quad of one far drop; false when it is culled or thinned out. `weight` is the
@@ -223,6 +214,31 @@ void add_drops_in_chunks(const DropContext& ctx, FrameValues& values, int thread
   values.streaks.resize(streak_count);
 }
 
+/// Splash droplets are water like the rain and take its path: refractive spheres when near and
+/// at least a pixel across, streak quads otherwise (lit like drops, thinned by coverage keyed by
+/// their ids). splash_keep of them are kept first, by a hash of the id independent of the
+/// coverage thinning's, and carry the light of the rest (opacity / splash_keep).
+void add_splash_droplets(const DropContext& ctx, double splash_keep, FrameValues& values) {
+  const sim::Drops& droplets = ctx.drops;
+  const auto keep = static_cast<float>(std::clamp(splash_keep, 1e-6, 1.0));
+  if (keep >= 1.0f) {
+    add_drops(ctx, 0, droplets.size(), values.drops, values.streaks);
+    return;
+  }
+  sim::Drops kept;
+  for (std::size_t i = 0; i < droplets.size(); ++i) {
+    if (id_unit(droplets.id[i] ^ 0x5bd1e995u) >= keep) continue;
+    kept.id.push_back(droplets.id[i]);
+    kept.position.push_back(droplets.position[i]);
+    kept.velocity.push_back(droplets.velocity[i]);
+    kept.acceleration.push_back(droplets.acceleration[i]);
+    kept.diameter.push_back(droplets.diameter[i]);
+    kept.opacity.push_back(droplets.opacity[i] / keep);
+  }
+  add_drops(DropContext{ctx.streaks, kept, ctx.split}, 0, kept.size(), values.drops,
+            values.streaks);
+}
+
 glm::vec3 default_flash_position(const ViewFrustum& view) {
   // Sheet lightning from behind the clouds, high and ahead of the camera.
   return view.eye() + view.forward() * 200.0f + glm::vec3{0.0f, 300.0f, 0.0f};
@@ -249,7 +265,6 @@ void build_frame_values(const sim::Frame& frame, const ExportParams& look, Frame
   const ViewFrustum view(look.camera, static_cast<double>(look.width) / look.height);
   values.index = frame.index;
   values.drops.clear();  // (streaks: add_drops_in_chunks)
-  values.splashes.clear();
   values.bolts.clear();
 
   // The faintest atlas row is the floor of the level of detail: fainter streaks are thinned to
@@ -261,27 +276,7 @@ void build_frame_values(const sim::Frame& frame, const ExportParams& look, Frame
   const DropContext drops{ctx, frame.drops, static_cast<float>(look.sphere_distance_m)};
   add_drops_in_chunks(drops, values, threads);
 
-  const sim::SplashDroplets& splashes = frame.splashes;
-  const auto splash_keep = static_cast<float>(std::clamp(look.splash_keep, 1e-6, 1.0));
-  const bool has_velocity = splashes.velocity.size() == splashes.size();
-  // Survivors of the level of detail are drawn wider so the droplets cover the same area
-  // (1 when every droplet is kept).
-  const float splash_widen = 1.0f / std::sqrt(splash_keep);
-  for (std::size_t i = 0; i < splashes.size(); ++i) {
-    const glm::vec3& p = splashes.position[i];
-    const float opacity = i < splashes.opacity.size() ? splashes.opacity[i] : 1.0f;
-    if (!(opacity > 0.0f)) continue;
-    if (splash_keep < 1.0f) {
-      const float key =
-          has_velocity ? droplet_unit(splashes.velocity[i], splashes.diameter[i]) : id_unit(i);
-      if (key >= splash_keep) continue;
-    }
-    // Droplets are glints: never smaller than half a pixel, or POV-Ray without AA misses them.
-    const float pixel = view.pixel_size(std::max(view.depth(p), 1e-3f), look.width);
-    const float radius = std::max(0.5f * splashes.diameter[i], 0.5f * pixel) * splash_widen;
-    if (!view.sphere_visible(p, radius)) continue;
-    values.splashes.push_back({p, radius, 1.0f});
-  }
+  add_splash_droplets(DropContext{ctx, frame.splashes, drops.split}, look.splash_keep, values);
 
   values.flash = std::clamp(frame.flash, 0.0f, 1.0f);
   values.flash_position = default_flash_position(view);
@@ -318,6 +313,29 @@ void build_frame_values(const sim::Frame& frame, const ExportParams& look, Frame
         if (s.end.y > values.flash_position.y) values.flash_position = s.end;
       }
     }
+  }
+
+  // The wet ground: a frame that draws the environment plate shows the plate's puddles (no
+  // map); a traced one gets its map of rings and the ground's state.
+  values.ripples = RippleMap{};
+  values.ground = ground_applies(look);
+  values.time_s = frame.time_s;
+  const bool traced =
+      !environment_plate_applies(look) || values.flash > 0.0f || !values.bolts.empty();
+  if (values.ground && traced) {
+    const sim::PuddleParams& puddles = look.ground.puddles;
+    const sim::PuddleParams& drawn = values.puddle_share_for;
+    if (!values.ground_pixels.matches(look.camera, look.width, look.height,
+                                      look.ground.ground_y_m) ||
+        values.puddle_share.empty() || drawn.coverage != puddles.coverage ||
+        drawn.size_m != puddles.size_m || drawn.seed != puddles.seed) {
+      values.puddle_share_for = puddles;
+      values.ground_pixels =
+          GroundPixels(look.camera, look.width, look.height, look.ground.ground_y_m);
+      values.puddle_share = puddle_mask(
+          values.ground_pixels, sim::PuddleField(look.ground.puddles, look.ground.puddles.seed));
+    }
+    draw_ripples(values.ground_pixels, values.puddle_share, frame.ripples, values.ripples);
   }
 }
 

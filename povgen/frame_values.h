@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "povgen/export_params.h"
+#include "povgen/ground_maps.h"
 #include "povgen/streak_atlas.h"
 #include "sim/frame.h"
 
@@ -46,10 +47,21 @@ struct BoltValue {
 
 struct FrameValues {
   int index = 0;
-  std::vector<SphereValue> drops;     ///< near drops: nearer than sphere_distance_m
-  std::vector<StreakValue> streaks;   ///< far drops
-  std::vector<SphereValue> splashes;  ///< splash droplets
+  std::vector<SphereValue> drops;    ///< near drops (then near splash droplets)
+  std::vector<StreakValue> streaks;  ///< far drops (then far splash droplets)
   std::vector<BoltValue> bolts;
+  /// The frame's rings and the ground's state as the camera sees them (empty without puddles,
+  /// and in frames that draw the environment plate): written beside the frame as
+  /// ripples/ripple_NNNN.png (ground_scene.h).
+  RippleMap ripples;
+  /// Wet ground drawn (ground_scene.h's ground_applies): the frame declares its time for it.
+  bool ground = false;
+  double time_s = 0.0;  ///< simulated time of the frame
+  /// Where each pixel sees the ground, and the puddles there: kept from frame to frame (same
+  /// camera, same pixels, same puddles).
+  GroundPixels ground_pixels;
+  std::vector<float> puddle_share;
+  sim::PuddleParams puddle_share_for;
   float flash = 0.0f;              ///< 0..1
   glm::vec3 flash_position{0.0f};  ///< where the lightning light sits
 };
@@ -61,9 +73,10 @@ double streak_coverage_threshold(const ExportParams& look);
 /// Builds the values of one frame. Drops nearer than look.sphere_distance_m that are at least
 /// one pixel across and move less than their own height during the exposure become spheres
 /// (stretched over their path), all others streaks whose opacity is the share of the exposure
-/// the drop covers each point (sim/streak.h). Drops and droplets wholly outside the view are
-/// dropped; a streak narrower (or shorter) than one pixel is drawn a pixel wide and fainter by
-/// the same factor (its coverage of the pixel). Streaks fainter than
+/// the drop covers each point (sim/streak.h); splash droplets follow, the same way
+/// (look.splash_keep of them, by id, carrying the others' light). Drops and droplets wholly
+/// outside the view are dropped; a streak narrower (or shorter) than one pixel is drawn a pixel
+/// wide and fainter by the same factor (its coverage of the pixel). Streaks fainter than
 /// streak_coverage_threshold() are thinned out by drop id and the survivors drawn at that
 /// coverage (same expected light, fewer quads). Throws
 /// std::invalid_argument if the camera is degenerate or a value is not finite.

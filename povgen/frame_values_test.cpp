@@ -318,71 +318,75 @@ TEST(FrameValues, ThinningKeepsTheSameDropsFromFrameToFrame) {
 }
 
 /// 4000 splash droplets 1 mm across in front of the camera (depth 5 m, where a 640 px pixel is
-/// 9.02 mm), thrown sideways and up at speeds that differ from droplet to droplet.
-sim::Frame splashing(float fall_s = 0.0f) {
+/// 9.02 mm), thrown sideways and up at speeds that differ from droplet to droplet, each with
+/// opacity `weight` (a level-of-detail weight above 1 stands for several droplets).
+sim::Frame splashing(float fall_s = 0.0f, float weight = 1.0f) {
   sim::Frame frame;
   std::uint32_t state = 12345;
   auto next = [&state] {
     state = state * 1664525u + 1013904223u;
     return static_cast<float>(state >> 8) * 0x1.0p-24f;
   };
+  sim::Drops& d = frame.splashes;
   for (int i = 0; i < 4000; ++i) {
     glm::vec3 v{next() - 0.5f, 1.0f + next(), next() - 0.5f};
     glm::vec3 p{-2.0f + 4.0f * next(), 0.5f + next(), 0.0f};
     // Later in the flight: gravity has only changed the vertical speed.
     p += fall_s * v;
     v.y -= 9.81f * fall_s;
-    frame.splashes.position.push_back(p);
-    frame.splashes.velocity.push_back(v);
-    frame.splashes.diameter.push_back(1e-3f);
-    frame.splashes.opacity.push_back(1.0f);
+    d.id.push_back(0x9e3779b97f4a7c15ULL * (i + 1));
+    d.position.push_back(p);
+    d.velocity.push_back(v);
+    d.acceleration.push_back({0.0f, -9.81f, 0.0f});
+    d.diameter.push_back(1e-3f);
+    d.opacity.push_back(weight);
   }
   return frame;
 }
 
-double covered_area(const std::vector<SphereValue>& droplets) {
-  double area = 0.0;
-  for (const SphereValue& d : droplets) area += 3.14159265 * d.radius * d.radius;
-  return area;
-}
-
-TEST(FrameValues, SplashDropletsAreThinnedAndWidenedToCoverTheSameArea) {
-  const sim::Frame frame = splashing();
+TEST(FrameValues, SplashDropletsAreDrawnLikeDrops) {
+  // Every droplet keeps its light: no coverage thinning, splash_keep 1. At depth 5 m a 1 mm
+  // droplet is thinner than a pixel, so each one is a streak, like a far drop.
   ExportParams look = default_look();
   look.splash_keep = 1.0;
-  const FrameValues all = build_frame_values(frame, look);
-  ASSERT_EQ(all.splashes.size(), 4000u);
-  // Below a pixel, a droplet is drawn half a pixel in radius: 4.51 mm at depth 5 m.
-  EXPECT_NEAR(all.splashes[0].radius, 4.51e-3f, 0.01e-3f);
-
-  look.splash_keep = 0.25;
-  const FrameValues kept = build_frame_values(frame, look);
-  // Binomial(4000, 0.25): 1000 expected, σ ≈ 27.
-  EXPECT_NEAR(static_cast<double>(kept.splashes.size()), 1000.0, 110.0);
-  for (const SphereValue& d : kept.splashes) EXPECT_NEAR(d.radius, 2.0f * 4.51e-3f, 0.02e-3f);
-  EXPECT_NEAR(covered_area(kept.splashes) / covered_area(all.splashes), 1.0, 0.11);
+  look.min_streak_coverage = 0.0;
+  const FrameValues values = build_frame_values(splashing(), look);
+  EXPECT_EQ(values.drops.size(), 0u);
+  EXPECT_EQ(values.streaks.size(), 4000u);
 }
 
-TEST(FrameValues, SplashThinningKeepsTheSameDropletsThroughTheirFlight) {
-  // 0.1 s later every droplet has moved and slowed vertically: the same ones must survive.
+TEST(FrameValues, SplashDropletWeightMakesItsStreakMoreOpaque) {
+  // The same droplets carrying weight 4 (each stands for 4): their streaks are 4 times as
+  // opaque, i.e. two halvings up the atlas (row r has opacity 2^(-r / kStreakRowsPerHalving)),
+  // until opacity 1.
   ExportParams look = default_look();
-  look.splash_keep = 0.5;
-  const FrameValues before = build_frame_values(splashing(), look);
-  const FrameValues after = build_frame_values(splashing(0.1f), look);
-  ASSERT_GT(before.splashes.size(), 1500u);
-  ASSERT_EQ(before.splashes.size(), after.splashes.size());
-  // Same droplets in the same order: the horizontal displacement is 0.1 s × its own velocity.
-  const sim::Frame start = splashing();
-  std::size_t matched = 0;
-  for (std::size_t i = 0, j = 0; i < start.splashes.size() && j < before.splashes.size(); ++i) {
-    if (glm::length(start.splashes.position[i] - before.splashes[j].centre) > 1e-6f) continue;
-    const glm::vec3 expected = start.splashes.position[i] + 0.1f * start.splashes.velocity[i];
-    EXPECT_NEAR(after.splashes[j].centre.x, expected.x, 1e-5f);
-    EXPECT_NEAR(after.splashes[j].centre.z, expected.z, 1e-5f);
-    ++matched;
-    ++j;
+  look.splash_keep = 1.0;
+  look.min_streak_coverage = 0.0;
+  const StreakAtlasLayout atlas;
+  const FrameValues one = build_frame_values(splashing(0.0f, 1.0f), look, atlas);
+  const FrameValues four = build_frame_values(splashing(0.0f, 4.0f), look, atlas);
+  ASSERT_EQ(one.streaks.size(), four.streaks.size());
+  std::size_t compared = 0;
+  for (std::size_t i = 0; i < one.streaks.size(); ++i) {
+    const int row = one.streaks[i].cell / atlas.columns();
+    if (row < 2 * kStreakRowsPerHalving) continue;
+    EXPECT_EQ(four.streaks[i].cell / atlas.columns(), row - 2 * kStreakRowsPerHalving);
+    EXPECT_EQ(four.streaks[i].cell % atlas.columns(), one.streaks[i].cell % atlas.columns());
+    ++compared;
   }
-  EXPECT_EQ(matched, before.splashes.size());
+  EXPECT_GT(compared, 3000u);
+}
+
+TEST(FrameValues, SplashKeepThinsDropletsByIdAndKeepsThemThroughTheirFlight) {
+  ExportParams look = default_look();
+  look.min_streak_coverage = 0.0;
+  look.splash_keep = 0.25;
+  const FrameValues before = build_frame_values(splashing(), look);
+  // Binomial(4000, 0.25): 1000 expected, σ ≈ 27.
+  EXPECT_NEAR(static_cast<double>(before.streaks.size()), 1000.0, 110.0);
+  // 0.1 s later every droplet has moved: the same ones survive (their ids decide).
+  const FrameValues after = build_frame_values(splashing(0.1f), look);
+  EXPECT_EQ(before.streaks.size(), after.streaks.size());
 }
 
 TEST(FrameValues, LightningLightSitsAtTheTopOfTheBrightestBolt) {
@@ -432,8 +436,7 @@ TEST(FrameValues, BoltBranchesFaintestLastAndNoThinnerThanHalfAPixel) {
 
 /// Number of places where a and b differ (sizes, then every field of every element).
 std::size_t differences(const FrameValues& a, const FrameValues& b) {
-  std::size_t n = (a.drops.size() != b.drops.size()) + (a.streaks.size() != b.streaks.size()) +
-                  (a.splashes.size() != b.splashes.size());
+  std::size_t n = (a.drops.size() != b.drops.size()) + (a.streaks.size() != b.streaks.size());
   for (std::size_t i = 0; i < std::min(a.drops.size(), b.drops.size()); ++i) {
     n += a.drops[i].centre != b.drops[i].centre || a.drops[i].radius != b.drops[i].radius ||
          a.drops[i].axis_ratio != b.drops[i].axis_ratio;

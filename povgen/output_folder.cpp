@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -13,6 +14,7 @@
 
 #include "povgen/content_hash.h"
 #include "povgen/frame_text.h"
+#include "povgen/ground_scene.h"
 #include "povgen/scene_files.h"
 #include "povgen/streak_atlas.h"
 #include "povgen/templates.h"
@@ -34,6 +36,27 @@ void rename_or_throw(const std::filesystem::path& from, const std::filesystem::p
     std::filesystem::remove(from, error);
     throw std::system_error(error, "cannot rename " + from.string() + " to " + to.string());
   }
+}
+
+/// Writes an image through `write` under a temporary name that keeps the extension (OpenImageIO
+/// picks the format by it), then renames it into place. OpenImageIO words its own errors; a
+/// full disk or a read-only folder is still in errno and reported as such.
+void write_image_atomic(const std::filesystem::path& path,
+                        const std::function<void(const std::filesystem::path&)>& write) {
+  std::filesystem::path tmp = path;
+  tmp.replace_extension(".tmp" + path.extension().string());
+  errno = 0;
+  try {
+    write(tmp);
+  } catch (const std::runtime_error&) {
+    const int error = errno;
+    std::filesystem::remove(tmp);
+    if (error == ENOSPC || error == EDQUOT || error == EIO || error == EACCES || error == EROFS) {
+      throw_system_error(error, "cannot write " + tmp.string());
+    }
+    throw;
+  }
+  rename_or_throw(tmp, path);
 }
 
 }  // namespace
@@ -71,6 +94,16 @@ void create_output_folders(const std::filesystem::path& out_dir) {
 
 std::string write_frame_file(const std::filesystem::path& path, const FrameValues& values,
                              std::string_view hash_prefix, int threads) {
+  if (!values.ripples.empty()) {
+    // Beside frames/: the frame's text names it and carries its hash (frame_text.h).
+    const std::filesystem::path map =
+        path.parent_path().parent_path() / ripple_map_name(values.index);
+    std::error_code made;
+    std::filesystem::create_directories(map.parent_path(), made);
+    if (made) throw_system_error(made.value(), "cannot create " + map.parent_path().string());
+    write_image_atomic(
+        map, [&](const std::filesystem::path& to) { write_ripple_png(to, values.ripples); });
+  }
   std::filesystem::path tmp = path;
   tmp += ".tmp";
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(tmp.c_str(), "wbe"),
@@ -122,6 +155,7 @@ std::string write_shared_files(const std::filesystem::path& out_dir, const Expor
   emit("scene.ini", ini_text(look, frame_count, "frame", "scene.pov"));
   emit(kEnvironmentInclude, environment_text(look.environment, scene_dir));
   emit(kMaterialsInclude, materials_template());
+  if (ground_applies(look)) emit(kGroundInclude, ground_template());
   if (environment_plate_applies(look)) {
     emit(kPlatePov, plate_pov_text());
     emit(kPlateIni, plate_ini_text(look));
@@ -137,26 +171,21 @@ std::string write_shared_files(const std::filesystem::path& out_dir, const Expor
     std::filesystem::remove(out_dir / "mask.pov");
     std::filesystem::remove(out_dir / "mask.ini");
   }
-  // OpenImageIO picks the format from the extension, so the temporary name keeps ".png".
   const std::filesystem::path atlas = out_dir / kStreakAtlas;
-  std::filesystem::path tmp = atlas;
-  tmp.replace_filename("streak_atlas.tmp.png");
-  errno = 0;
-  try {
-    write_streak_atlas(tmp, StreakAtlasLayout{});
-  } catch (const std::runtime_error& e) {
-    // OpenImageIO words its own message; the system's reason is still in errno.
-    const int error = errno;
-    std::filesystem::remove(tmp);
-    if (error == ENOSPC || error == EDQUOT || error == EIO || error == EACCES || error == EROFS) {
-      throw_system_error(error, "cannot write " + tmp.string());
-    }
-    throw;
-  }
-  rename_or_throw(tmp, atlas);
+  write_image_atomic(
+      atlas, [](const std::filesystem::path& to) { write_streak_atlas(to, StreakAtlasLayout{}); });
   all += kStreakAtlas;
   all += '\0';
   all += read_file_bytes(atlas);
+  if (ground_applies(look)) {
+    const std::filesystem::path mask = out_dir / kPuddleMask;
+    write_image_atomic(mask, [&](const std::filesystem::path& to) {
+      write_mask_png(to, look.width, look.height, ground_puddle_mask(look));
+    });
+    all += kPuddleMask;
+    all += '\0';
+    all += read_file_bytes(mask);
+  }
   return content_hash(all);
 }
 

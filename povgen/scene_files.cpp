@@ -7,6 +7,7 @@
 #include <string>
 
 #include "povgen/frame_text.h"
+#include "povgen/ground_scene.h"
 #include "povgen/number_format.h"
 #include "povgen/rain_look.h"
 #include "povgen/templates.h"
@@ -195,6 +196,7 @@ std::string scene_inc_text(const ExportParams& look) {
     // it twice.
     text += "#declare RT_LampHaze=0;\n";
   }
+  text += ground_scene_text(look);
   if (environment_plate_applies(look)) {
     text += environment_with_plate_text(look, aspect);
   } else {

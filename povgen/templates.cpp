@@ -15,6 +15,7 @@ extern const char* const kNightStreetTemplate;
 extern const char* const kFieldTemplate;
 extern const char* const kCloseupTemplate;
 extern const char* const kMaterialsTemplate;
+extern const char* const kGroundTemplate;
 
 const std::vector<std::string>& builtin_environments() {
   static const std::vector<std::string> names(std::begin(kEnvironmentNames),
@@ -35,6 +36,11 @@ const std::string& environment_template(std::string_view name) {
 
 const std::string& materials_template() {
   static const std::string text{kMaterialsTemplate};
+  return text;
+}
+
+const std::string& ground_template() {
+  static const std::string text{kGroundTemplate};
   return text;
 }
 

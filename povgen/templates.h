@@ -22,6 +22,9 @@ const std::string& environment_template(std::string_view name);
 /// Text of templates/raintrace_materials.inc (drop, streak, splash and bolt materials).
 const std::string& materials_template();
 
+/// Text of templates/raintrace_ground.inc (puddles and ripples: the RT_WetGround macro).
+const std::string& ground_template();
+
 /// The environment.inc to write for these params: the built-in template, or the bytes of the
 /// user's include ([environment] include_path, relative to scene_dir). The user's path is
 /// re-checked here: relative, no "..", inside scene_dir after resolving links, a regular file.

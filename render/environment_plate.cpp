@@ -14,6 +14,7 @@
 #include "output/disk_space.h"
 #include "output/image_check.h"
 #include "povgen/content_hash.h"
+#include "povgen/ground_scene.h"
 #include "povgen/output_folder.h"
 #include "render/povray_command.h"
 #include "render/process.h"
@@ -42,8 +43,10 @@ bool plate_is_current(const std::filesystem::path& out, int width, int height,
 
 std::string environment_plate_inputs_hash(const std::filesystem::path& out_dir) {
   povgen::ContentHasher hasher;
-  for (const char* name : {povgen::kPlateIni, povgen::kPlatePov, povgen::kSceneInclude,
-                           povgen::kEnvironmentInclude, povgen::kMaterialsInclude}) {
+  // Everything plate.pov reads: the puddles too (the wet ground's include and its mask).
+  for (const char* name :
+       {povgen::kPlateIni, povgen::kPlatePov, povgen::kSceneInclude, povgen::kEnvironmentInclude,
+        povgen::kMaterialsInclude, povgen::kGroundInclude, povgen::kPuddleMask}) {
     // Name and length frame each file's bytes, so moving text between files changes the hash.
     hasher.update(name);
     std::error_code ec;

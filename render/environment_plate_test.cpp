@@ -48,6 +48,14 @@ TEST(EnvironmentPlate, InputsHashFollowsEachPlateInputButNotTheFrames) {
   // A materials include appearing (even empty) is a change too.
   append(dir / "raintrace_materials.inc", "");
   EXPECT_NE(environment_plate_inputs_hash(dir), previous);
+  previous = environment_plate_inputs_hash(dir);
+  // So are the wet ground's include and its puddle mask, which the plate draws.
+  append(dir / "raintrace_ground.inc", "");
+  EXPECT_NE(environment_plate_inputs_hash(dir), previous);
+  previous = environment_plate_inputs_hash(dir);
+  std::filesystem::create_directories(dir / "textures");
+  append(dir / "textures" / "puddle_mask.png", "x");
+  EXPECT_NE(environment_plate_inputs_hash(dir), previous);
 }
 
 class PovrayEnvironmentPlate : public testing::PovrayTest {};

@@ -20,6 +20,9 @@ struct Camera {
   double fov_deg = 60.0;
   /// Width / height of the image, > 0; set from [output] width and height.
   double aspect = 16.0 / 9.0;
+  /// Image width in pixels, >= 1; set from [output] width: the ground's level of detail (how
+  /// many impacts are worth simulating at a distance) follows the size of a pixel.
+  int width_px = 640;
   /// Exposure, s: the paper's persistence time t in eq. 3.
   double exposure_s = 0.02;
 };

@@ -133,8 +133,8 @@ TEST(Validate, OrderRulesNameBothKeys) {
 
 TEST(Validate, IntegersVectorsAndNonFiniteValues) {
   SimParams p;
-  p.splashes.droplets = 33;
-  EXPECT_EQ(error_of(p), "splashes.droplets must be in [0, 32] (got 33)");
+  p.splashes.droplets = 65;
+  EXPECT_EQ(error_of(p), "splashes.droplets must be in [0, 64] (got 65)");
   p = SimParams{};
   p.wind.velocity_m_per_s.z = -61;
   EXPECT_EQ(error_of(p), "wind.velocity_m_per_s[2] must be in [-60, 60] (got -61)");

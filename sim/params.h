@@ -106,21 +106,67 @@ static_assert(well_formed<WindParams>(kWindParams));
 bool is_horizontal_direction(const glm::dvec3& direction);
 
 struct SplashParams {
-  /// Drops hitting the ground end in splashes.
+  /// Drops that hit the ground hard enough throw crown-splash droplets (sim/splash.h: when
+  /// K = We·Oh^−0.4 exceeds 2100 + 5880·(h/D)^1.44).
   bool enabled = true;
-  /// Droplets per splash.
-  int droplets = 4;
-  /// How long splash droplets live.
-  double lifetime_s = 0.15;
+  /// Most droplets one splash throws; the crown's own count is 5·(K/K_c − 1), so this only trims
+  /// the biggest splashes. 0 draws none (the impacts still ripple).
+  int droplets = 32;
+  /// Longest a droplet flies before it is dropped; it fades over the last third. Most land
+  /// sooner (a 1 mm droplet thrown at 1.5 m/s: 0.1 s).
+  double lifetime_s = 0.3;
 };
 
 /// [splashes]
 inline constexpr Param<SplashParams> kSplashParams[] = {
     flag("splashes", "enabled", &SplashParams::enabled),
-    integer("splashes", "droplets", &SplashParams::droplets, "", 0, 32),
+    integer("splashes", "droplets", &SplashParams::droplets, "", 0, 64),
     number("splashes", "lifetime_s", &SplashParams::lifetime_s, "s", Range::open_closed(0, 2)),
 };
 static_assert(well_formed<SplashParams>(kSplashParams));
+
+struct PuddleParams {
+  /// Share of the wet ground under standing water. The default, "automatic", is the
+  /// environment's: a quarter of night_street's road (cli/scene.cpp), none elsewhere; sim reads
+  /// an unresolved value as none.
+  double coverage = -1.0;
+  /// Typical size of a puddle, across.
+  double size_m = 1.2;
+  /// Depth of water in the middle of a puddle (from the film at its edge).
+  double depth_mm = 6.0;
+  /// Depth of the water film on the wet ground between puddles: it sets the splash threshold
+  /// there (h/D in K_c).
+  double film_mm = 0.3;
+  /// Seed of the puddle layout. The puddles belong to the street, not to the rain: `--seed`
+  /// changes the rain and leaves them where they are.
+  std::uint64_t seed = 1;
+};
+
+/// [puddles]
+inline constexpr Param<PuddleParams> kPuddleParams[] = {
+    number("puddles", "coverage", &PuddleParams::coverage, "", Range::closed(0, 0.9))
+        .unset_as("automatic"),
+    number("puddles", "size_m", &PuddleParams::size_m, "m", Range::closed(0.1, 20)),
+    number("puddles", "depth_mm", &PuddleParams::depth_mm, "mm", Range::closed(1, 100)),
+    number("puddles", "film_mm", &PuddleParams::film_mm, "mm", Range::closed(0, 5))
+        .at_most("depth_mm"),
+    seed("puddles", "seed", &PuddleParams::seed),
+};
+static_assert(well_formed<PuddleParams>(kPuddleParams));
+
+struct RippleParams {
+  /// Impacts on standing water start ring ripples (sim/ripples.h).
+  bool enabled = true;
+  /// How long a ring on a puddle lasts before it has faded away.
+  double lifetime_s = 0.5;
+};
+
+/// [ripples]
+inline constexpr Param<RippleParams> kRippleParams[] = {
+    flag("ripples", "enabled", &RippleParams::enabled),
+    number("ripples", "lifetime_s", &RippleParams::lifetime_s, "s", Range::closed(0.05, 5)),
+};
+static_assert(well_formed<RippleParams>(kRippleParams));
 
 struct LightningParams {
   /// Lightning on or off.
@@ -188,6 +234,8 @@ struct SimParams {
   RainParams rain;
   WindParams wind;
   SplashParams splashes;
+  PuddleParams puddles;
+  RippleParams ripples;
   LightningParams lightning;
   /// Height of the ground plane.
   double ground_y_m = 0.0;
@@ -195,8 +243,9 @@ struct SimParams {
   /// the frame rate.
   double substep_s = 0.002;
   /// Simulated time before frame 1 so the volume is already full of falling rain. The default
-  /// (−1, "automatic") lets World pick max(0.2, splashes.lifetime_s + 0.05): the volume is
-  /// filled at steady-state density first, so only splashes and merging need the time.
+  /// (−1, "automatic") lets World pick 0.2 s: the volume is filled at steady-state density
+  /// first, so only merging needs the time (the ground's impacts from before the drops start
+  /// are sampled from the flux).
   double prewarm_s = -1.0;
   /// Worker threads for a step, in [0, 1024]; 0 = all cores. Results never depend on it. Not a
   /// scene-file key.

@@ -9,14 +9,18 @@ namespace raintrace::sim {
 
 /// Independent streams, one per kind of random event.
 enum class Stream : std::uint64_t {
-  spawn_count = 1,  ///< how many drops enter in a substep (a = substep)
-  drop = 2,         ///< a drop's birth properties (a = drop id, b = dimension)
-  fill = 3,         ///< the initial fill (a = drop id, b = dimension)
-  splash = 4,       ///< splash droplets (a = drop id, b = droplet·8 + dimension)
-  breakup = 5,      ///< fragments of a breaking drop (a = drop id, b = fragment·8 + dimension)
-  lightning = 6,    ///< strike times (a = strike number)
-  bolt = 7,         ///< a bolt's skeleton (a = strike number, b = counter)
-  turbulence = 8,   ///< turbulence modes (a = mode, b = dimension)
+  spawn_count = 1,     ///< how many drops enter in a substep (a = substep)
+  drop = 2,            ///< a drop's birth properties (a = drop id, b = dimension)
+  fill = 3,            ///< the initial fill (a = drop id, b = dimension)
+  splash = 4,          ///< crown splashes (a = impact key, b = sim/splash.cpp's dimensions)
+  breakup = 5,         ///< fragments of a breaking drop (a = drop id, b = fragment·8 + dimension)
+  lightning = 6,       ///< strike times (a = strike number)
+  bolt = 7,            ///< a bolt's skeleton (a = strike number, b = counter)
+  turbulence = 8,      ///< turbulence modes (a = mode, b = dimension)
+  puddles = 9,         ///< the puddle field's cosine terms (a = term, b = dimension)
+  ground_count = 10,   ///< impacts sampled in a ground cell (a = cell, b = time slot)
+  ground_impact = 11,  ///< one sampled impact (a = cell, b = slot·2^20 + impact·16 + dimension)
+  ground_detail = 12,  ///< whether a drop's impact survives the level of detail (a = drop id)
 };
 
 /// SplitMix64's finaliser: a bijective mix with full avalanche.

@@ -18,7 +18,10 @@ StatisticsCollector::StatisticsCollector(const SimParams& params)
       m_speed_samples(kSpeedBinCount, 0) {}
 
 void StatisticsCollector::add(const Frame& frame) {
-  if (m_frames == 0) m_first_time = frame.time_s;
+  if (m_frames == 0) {
+    m_first_time = frame.time_s;
+    m_first_impacts = frame.ground_impacts;
+  }
   m_last_time = frame.time_s;
   ++m_frames;
   const Drops& drops = frame.drops;
@@ -64,7 +67,11 @@ void StatisticsCollector::add(const Frame& frame) {
   m_motion.push_back(motion);
   m_ground_water_last_m3 = frame.ground_water_m3;
   m_ground_area_m2 = frame.ground_area_m2;
+  m_impacts = frame.ground_impacts;
   m_splashes = frame.splash_events;
+  m_ripples = frame.ripple_events;
+  m_impacts_simulated = frame.ground_impacts_simulated;
+  m_impact_area_m2 = frame.impact_area_m2;
   m_strikes = frame.lightning_strikes;
   for (const Bolt& bolt : frame.bolts) {
     if (m_bolt_ids.insert(bolt.id).second) m_segments += bolt.segments.size();
@@ -109,7 +116,16 @@ Statistics StatisticsCollector::result() const {
     s.rain_rate_measured_mm_per_h =
         m_ground_water_last_m3 / m_ground_area_m2 * kMmPerM / m_last_time * kSecondsPerHour;
   }
-  s.splashes = m_splashes;
+  s.ground.impacts = static_cast<std::uint64_t>(std::llround(m_impacts));
+  s.ground.splashes = static_cast<std::uint64_t>(std::llround(m_splashes));
+  s.ground.ripples = static_cast<std::uint64_t>(std::llround(m_ripples));
+  s.ground.impacts_simulated = m_impacts_simulated;
+  s.ground.area_m2 = m_impact_area_m2;
+  if (m_last_time > m_first_time && m_impact_area_m2 > 0.0) {
+    s.ground.impacts_per_m2_s =
+        (m_impacts - m_first_impacts) / (m_impact_area_m2 * (m_last_time - m_first_time));
+  }
+  s.splashes = s.ground.splashes;
   s.lightning_strikes = m_strikes;
   s.lightning_segments = m_segments;
   return s;

@@ -48,6 +48,19 @@ struct FrameMotion {
   std::array<double, 2> wind_m_per_s{0.0, 0.0};
 };
 
+/// Drops reaching the visible ground (sim/ground_impacts.h) since t = 0, up to the last frame.
+/// Counts are estimates of the real numbers (level-of-detail weights summed), rounded.
+struct GroundStatistics {
+  std::uint64_t impacts = 0;            ///< drops that reached the visible ground
+  std::uint64_t splashes = 0;           ///< of them, impacts above the splash threshold
+  std::uint64_t ripples = 0;            ///< of them, impacts on puddles (ring ripples)
+  std::uint64_t impacts_simulated = 0;  ///< impacts simulated one by one (the rest are weight)
+  double area_m2 = 0.0;                 ///< ground they are counted over
+  /// Impacts per m² per second between the first and the last frame (0 with one frame): the
+  /// rain's number flux at the ground.
+  double impacts_per_m2_s = 0.0;
+};
+
 struct Statistics {
   int frames = 0;                              ///< snapshots fed
   double dt_s = 0.0;                           ///< time between consecutive frames, s
@@ -58,8 +71,9 @@ struct Statistics {
   double rain_rate_measured_mm_per_h = 0.0;    ///< water reaching the ground, mm/h (0 if no time)
   std::vector<SpeedBin> fall_speed;            ///< kSpeedBinCount bins, 0.1 mm wide, from 0 mm
   std::array<double, 2> mean_horizontal_velocity_m_per_s{0.0, 0.0};  ///< [x, z] over drops
-  std::vector<FrameMotion> motion;       ///< one entry per frame fed, in order
-  std::uint64_t splashes = 0;            ///< drops that ended in a splash up to the last frame
+  std::vector<FrameMotion> motion;  ///< one entry per frame fed, in order
+  std::uint64_t splashes = 0;  ///< impacts that splashed, up to the last frame (= ground.splashes)
+  GroundStatistics ground;     ///< what reached the visible ground
   std::uint64_t lightning_strikes = 0;   ///< distinct bolts seen (and struck) up to last frame
   std::uint64_t lightning_segments = 0;  ///< segments summed over the distinct bolts seen
 };
@@ -92,7 +106,12 @@ class StatisticsCollector {
   std::vector<FrameMotion> m_motion;
   double m_ground_water_last_m3 = 0.0;
   double m_ground_area_m2 = 0.0;
-  std::uint64_t m_splashes = 0;
+  double m_first_impacts = 0.0;  // the ground's running totals: first frame, last frame
+  double m_impacts = 0.0;
+  double m_splashes = 0.0;
+  double m_ripples = 0.0;
+  std::uint64_t m_impacts_simulated = 0;
+  double m_impact_area_m2 = 0.0;
   std::uint64_t m_strikes = 0;
   std::set<std::uint64_t> m_bolt_ids;
   std::uint64_t m_segments = 0;

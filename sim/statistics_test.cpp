@@ -108,6 +108,30 @@ TEST(Statistics, MeasuredRateIsGroundWaterDepthPerHour) {
   EXPECT_EQ(s.lightning_segments, 15u);
 }
 
+TEST(Statistics, GroundImpactsAreCountedAndTheirFluxMeasuredBetweenFrames) {
+  // Totals are running sums read from the last frame; the flux is the impacts between the first
+  // and the last frame over the area and the time: (3000 − 1000) / (20 m² · 0.5 s) = 200.
+  StatisticsCollector c{SimParams{}};
+  Frame f = frame_with(1.0, {});
+  f.ground_impacts = 1000.0;
+  f.impact_area_m2 = 20.0;
+  c.add(f);
+  f.time_s = 1.5;
+  f.ground_impacts = 3000.4;
+  f.splash_events = 700.6;
+  f.ripple_events = 250.0;
+  f.ground_impacts_simulated = 321;
+  c.add(f);
+  const Statistics s = c.result();
+  EXPECT_EQ(s.ground.impacts, 3000u);
+  EXPECT_EQ(s.ground.splashes, 701u);
+  EXPECT_EQ(s.splashes, 701u);
+  EXPECT_EQ(s.ground.ripples, 250u);
+  EXPECT_EQ(s.ground.impacts_simulated, 321u);
+  EXPECT_DOUBLE_EQ(s.ground.area_m2, 20.0);
+  EXPECT_NEAR(s.ground.impacts_per_m2_s, 200.04, 1e-9);
+}
+
 TEST(Statistics, EmptyIsAllZerosButTheConfiguredRate) {
   const Statistics s = StatisticsCollector{SimParams{}}.result();
   EXPECT_EQ(s.frames, 0);

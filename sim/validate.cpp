@@ -36,6 +36,10 @@ void validate(const Camera& camera) {
     throw std::invalid_argument("camera.aspect must be > 0 (got " + number_text(camera.aspect) +
                                 ")");
   }
+  if (camera.width_px < 1) {
+    throw std::invalid_argument("camera.width_px must be >= 1 (got " +
+                                std::to_string(camera.width_px) + ")");
+  }
 }
 
 void validate(const SimParams& p) {
@@ -46,6 +50,8 @@ void validate(const SimParams& p) {
     throw std::invalid_argument("wind.gust_direction must point somewhere horizontally");
   }
   check_params<SplashParams>(kSplashParams, p.splashes);
+  check_params<PuddleParams>(kPuddleParams, p.puddles);
+  check_params<RippleParams>(kRippleParams, p.ripples);
   check_params<LightningParams>(kLightningParams, p.lightning);
   check_params<SimParams>(kSimParams, p);
   if (p.threads < 0 || p.threads > 1024) {

@@ -12,6 +12,8 @@
 #include "sim/breakup.h"
 #include "sim/merging.h"
 #include "sim/random.h"
+#include "sim/ripples.h"
+#include "sim/splash.h"
 #include "sim/terminal_velocity.h"
 
 namespace raintrace::sim {
@@ -38,10 +40,34 @@ double wind_spread(const WindParams& w) {
   return (w.gusts ? 0.25 * 0.1 * w.gust_strength : 0.0) + 0.5 * w.turbulence_m_per_s;
 }
 
-double default_prewarm(const SimParams& p) {
+/// How long after an impact something of it still shows: splash droplets fly up to
+/// splashes.lifetime_s, rings on puddles last ripples.lifetime_s (film ripples less).
+double impact_memory(const SimParams& p) {
+  double memory = 0.0;
+  if (p.splashes.enabled) memory = std::max(memory, p.splashes.lifetime_s);
+  if (p.ripples.enabled) memory = std::max(memory, p.ripples.lifetime_s);
+  return memory;
+}
+
+double default_prewarm(const SimParams&) {
   // The fill already puts drops at their steady-state density and speed; what still needs
-  // time is the splash population (droplets live lifetime_s) and a few merging passes.
-  return std::max(0.2, p.splashes.lifetime_s + 0.05);
+  // time is a few merging passes. The ground's impacts from before the drops started are
+  // sampled from the flux (ImpactSampler's volume_start_s), so frame 1 has its ripples anyway.
+  return 0.2;
+}
+
+// Ripples are drawn ring by ring while a pixel spans at most a ring wavelength: beyond, the
+// pixel filter leaves under 0.1 % of a ring (sim/ripples.h) and the renderer draws the
+// roughness the rings add instead (ripple_slope_rms()).
+
+ImpactInput impact_input(const GroundImpact& impact) {
+  ImpactInput in;
+  in.key = impact.key;
+  in.position = impact.position;
+  in.velocity = impact.velocity;
+  in.diameter_m = impact.diameter_m;
+  in.water_depth_m = impact.water_depth_m;
+  return in;
 }
 
 }  // namespace
@@ -55,6 +81,9 @@ World::World(const SimParams& params, const std::atomic<bool>* cancel)
       m_region(m_view, params.ground_y_m, params.rain.ceiling_margin_m,
                glm::dvec3{params.wind.velocity_m_per_s.x, 0.0, params.wind.velocity_m_per_s.z},
                wind_spread(params.wind), terminal_velocity(params.rain.diameter_min_mm * 1e-3)),
+      m_puddles(params.puddles, params.puddles.seed),
+      m_detail(params.camera),
+      m_sampler(params.camera, params.ground_y_m, m_sizes, m_region, m_detail, params.seed),
       m_schedule(params.lightning, params.seed) {
   const double expected = m_sizes.number_density_per_m3() * m_region.volume_m3();
   if (expected > kMaxDrops) {
@@ -67,6 +96,12 @@ World::World(const SimParams& params, const std::atomic<bool>* cancel)
   m_prewarm_steps = std::llround(prewarm / m_params.substep_s);
   m_merge_every = std::max(1, static_cast<int>(std::lround(kMergeInterval_s / m_params.substep_s)));
   m_events.resize(static_cast<std::size_t>(thread_count()));
+  // Sampled impacts do not depend on the drops: start early enough that frame 1 shows the
+  // splashes and ripples of the moments before it, whatever the prewarm; the footprint's own
+  // are sampled too until the volume's drops start landing.
+  m_volume_start_s = time_s();
+  m_next_slot = static_cast<std::int64_t>(
+      std::floor((time_s() - impact_memory(m_params)) / ImpactSampler::kSlot_s));
   fill();
   while (m_step < m_prewarm_steps) {
     check_cancel();
@@ -179,16 +214,24 @@ void World::handle_events(double t_end_s) {
       glm::vec3 hit = p - v * tau;
       hit.y = ground;
       const double diameter = d.diameter[i];
+      const bool measured = m_region.in_measure_area(glm::dvec3(hit));
       if (counting) {
         ++m_ground_hits;
-        if (m_region.in_measure_area(glm::dvec3(hit))) {
+        if (measured) {
           m_ground_water_m3 += diameter * diameter * diameter * (3.14159265358979323846 / 6.0);
         }
       }
-      if (m_params.splashes.enabled && m_params.splashes.droplets > 0 &&
-          m_view.contains(glm::dvec3(hit) + glm::dvec3{0.0, 0.01, 0.0})) {
-        emit_splash(m_splash, m_params.splashes, hit, v, d.diameter[i], d.id[i], m_params.seed);
-        if (counting) ++m_splash_events;
+      // The footprint is the volume's ground (ground_impacts.h); outside it the sampler's.
+      const double keep = m_detail.keep(glm::dvec3(hit));
+      if (measured && uniform(m_params.seed, Stream::ground_detail, d.id[i]) < keep) {
+        GroundImpact impact;
+        impact.key = d.id[i];
+        impact.time_s = t_end_s - tau;
+        impact.position = hit;
+        impact.velocity = v;
+        impact.diameter_m = d.diameter[i];
+        impact.weight = static_cast<float>(1.0 / keep);
+        count(record_impact(impact));
       }
       m_removals.push_back(i);
     }
@@ -198,6 +241,62 @@ void World::handle_events(double t_end_s) {
   // into place by swap_remove is never one still to be removed.
   std::sort(m_removals.begin(), m_removals.end(), std::greater<>());
   for (const std::uint32_t i : m_removals) m_state.swap_remove(i);
+}
+
+double World::impact_memory_s() const { return impact_memory(m_params); }
+
+World::Tally World::record_impact(const GroundImpact& in) {
+  GroundImpact& impact = m_impacts.emplace_back(in);
+  const PuddleField::Water water = m_puddles.water_at(in.position.x, in.position.z);
+  impact.water_depth_m = static_cast<float>(water.depth_m);
+  impact.on_puddle = water.puddle;
+  if (m_params.splashes.enabled) {
+    impact.crown = crown_splash(m_params.splashes, impact_input(impact), m_params.seed);
+  }
+  return {impact.time_s, impact.weight, impact.crown.expected_droplets > 0.0,
+          m_params.ripples.enabled && impact.on_puddle};
+}
+
+void World::count(const Tally& tally) {
+  if (tally.time_s < 0.0) return;  // prewarm: not counted
+  ++m_ground_impacts_simulated;
+  m_ground_impacts += tally.weight;
+  if (tally.splash) m_splash_events += tally.weight;
+  if (tally.ripple) m_ripple_events += tally.weight;
+}
+
+void World::count_until(double t_end_s) {
+  while (m_uncounted_next < m_uncounted.size() && m_uncounted[m_uncounted_next].time_s < t_end_s) {
+    count(m_uncounted[m_uncounted_next++]);
+  }
+  if (m_uncounted_next > 4096 && 2 * m_uncounted_next > m_uncounted.size()) {
+    m_uncounted.erase(m_uncounted.begin(),
+                      m_uncounted.begin() + static_cast<std::ptrdiff_t>(m_uncounted_next));
+    m_uncounted_next = 0;
+  }
+}
+
+void World::sample_ground(double t_end_s) {
+  const auto slot_start = [](std::int64_t slot) {
+    return static_cast<double>(slot) * ImpactSampler::kSlot_s;
+  };
+  if (slot_start(m_next_slot) >= t_end_s) return;
+  // Forget impacts that no longer show, keeping the order of the rest.
+  const double oldest = t_end_s - impact_memory_s() - m_params.substep_s;
+  std::erase_if(m_impacts, [oldest](const GroundImpact& i) { return i.time_s < oldest; });
+  std::vector<GroundImpact> sampled;
+  while (slot_start(m_next_slot) < t_end_s) {
+    sampled.clear();
+    m_sampler.sample(m_next_slot, m_wind.uniform_at(slot_start(m_next_slot)), sampled,
+                     m_volume_start_s);
+    // A slot is sampled at its start but its impacts happen during it: they are counted as
+    // their times pass (count_until), in time order (slots follow each other).
+    const std::size_t first = m_uncounted.size();
+    for (const GroundImpact& impact : sampled) m_uncounted.push_back(record_impact(impact));
+    std::stable_sort(m_uncounted.begin() + static_cast<std::ptrdiff_t>(first), m_uncounted.end(),
+                     [](const Tally& a, const Tally& b) { return a.time_s < b.time_s; });
+    ++m_next_slot;
+  }
 }
 
 void World::step() {
@@ -228,8 +327,6 @@ void World::step() {
   c.min_opacity = kMinOpacity;
   c.fading = m_params.rain.vanishing_rate_per_s > 0.0;
 
-  step_splashes(m_splash, m_params.splashes, c.dt, c.ground);
-
   const std::size_t n = m_state.size();
   for (StepEvents& ev : m_events) ev.clear();
   const std::size_t chunks =
@@ -249,6 +346,8 @@ void World::step() {
     integrate_range(m_state, 0, n / chunks, c, m_events[0]);
   }
   handle_events(t + dt);
+  sample_ground(t + dt);
+  count_until(t + dt);
   spawn(t);
   ++m_step;
   if (m_params.rain.merging && m_step % m_merge_every == 0) {
@@ -271,6 +370,43 @@ void World::advance_to(double t_s) {
   }
 }
 
+void World::add_ground_effects(Frame& f) const {
+  const double memory = impact_memory_s();
+  const double lifetime = m_params.splashes.lifetime_s;
+  // Impacts since the last snapshot launch their droplets (every impact up to f.time_s has been
+  // recorded by now: the World only moves forward, and snapshots with it).
+  for (const GroundImpact& impact : m_impacts) {
+    const double age = f.time_s - impact.time_s;
+    if (impact.crown.droplets == 0 || impact.time_s <= m_flying_until_s || age < 0.0 ||
+        age >= lifetime) {
+      continue;
+    }
+    launch_droplets(impact.crown, impact_input(impact), impact.time_s, impact.weight,
+                    m_detail.pixel_m(glm::dvec3(impact.position)), m_params.camera.exposure_s,
+                    m_params.seed, m_flying);
+  }
+  m_flying_until_s = std::max(m_flying_until_s, f.time_s);
+  std::erase_if(m_flying, [&](FlyingDroplet& d) {
+    const double age = f.time_s - d.impact_time_s;
+    fly(d, age);
+    return d.landed || age >= lifetime;
+  });
+  for (const FlyingDroplet& d : m_flying) {
+    add_droplet(m_params.splashes, d, f.time_s - d.impact_time_s, f.splashes);
+  }
+  if (!m_params.ripples.enabled) return;
+  for (const GroundImpact& impact : m_impacts) {
+    const double age = f.time_s - impact.time_s;
+    if (age < 0.0 || age >= memory ||
+        m_detail.pixel_m(glm::dvec3(impact.position)) > ripple_wavelength()) {
+      continue;
+    }
+    const Ripple ripple = make_ripple(impact.position, impact.diameter_m, age, impact.water_depth_m,
+                                      impact.on_puddle, m_params.ripples.lifetime_s);
+    if (ripple.lifetime_s > 0.0f) f.ripples.push_back(ripple);
+  }
+}
+
 Frame World::snapshot(int frame_index) const {
   Frame f;
   f.index = frame_index;
@@ -288,7 +424,7 @@ Frame World::snapshot(int frame_index) const {
     f.drops.opacity.push_back(d.opacity[i]);
     f.drops.colour.push_back(d.colour[i]);
   }
-  f.splashes = m_splash.droplets;
+  add_ground_effects(f);
   // A frame records the light of its exposure: the shutter is open from time_s for
   // camera.exposure_s (the window the streaks span), and a flash counts by its average over it.
   float flash = 0.0f;
@@ -316,7 +452,11 @@ Frame World::snapshot(int frame_index) const {
   f.ground_water_m3 = m_ground_water_m3;
   f.ground_area_m2 = m_region.measure_area_m2();
   f.ground_hits = m_ground_hits;
+  f.ground_impacts = m_ground_impacts;
   f.splash_events = m_splash_events;
+  f.ripple_events = m_ripple_events;
+  f.ground_impacts_simulated = m_ground_impacts_simulated;
+  f.impact_area_m2 = m_region.measure_area_m2() + m_sampler.area_m2();
   f.view_volume_m3 = m_view.volume_m3();
   return f;
 }

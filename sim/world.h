@@ -18,11 +18,12 @@
 #include "sim/drop_size.h"
 #include "sim/drop_state.h"
 #include "sim/frame.h"
+#include "sim/ground_impacts.h"
 #include "sim/integrator.h"
 #include "sim/lightning.h"
 #include "sim/params.h"
+#include "sim/puddles.h"
 #include "sim/spawn_region.h"
-#include "sim/splash.h"
 #include "sim/view_volume.h"
 #include "sim/wind.h"
 
@@ -65,15 +66,20 @@ class World {
   /// One substep (benchmarks and tests).
   void step();
 
-  /// The state for the exporter: drops inside the view frustum [near_m, far_m], all splash
-  /// droplets, visible bolts with their brightness, flash, wind at look_at and running totals.
+  /// The state for the exporter: drops inside the view frustum [near_m, far_m], the splash
+  /// droplets in flight and the ripples of recent ground impacts (sim/splash.h,
+  /// sim/ripples.h: those near enough to show rings; farther water gets their roughness),
+  /// visible bolts with their brightness, flash, wind at look_at and running totals.
   [[nodiscard]] Frame snapshot(int frame_index) const;
 
   /// Simulated time of the current state, s (negative during prewarm).
   [[nodiscard]] double time_s() const;
   /// Every simulated drop, in or out of view.
   [[nodiscard]] const Drops& drops() const { return m_state.drops; }
-  [[nodiscard]] const SplashDroplets& splash_droplets() const { return m_splash.droplets; }
+  /// Ground impacts of the last moments (volume and sampled), oldest first within each source.
+  [[nodiscard]] const std::vector<GroundImpact>& ground_impacts() const { return m_impacts; }
+  [[nodiscard]] const PuddleField& puddles() const { return m_puddles; }
+  [[nodiscard]] const ImpactSampler& impact_sampler() const { return m_sampler; }
   [[nodiscard]] const SpawnRegion& region() const { return m_region; }
   [[nodiscard]] const ViewVolume& view() const { return m_view; }
   [[nodiscard]] const DropSizeModel& sizes() const { return m_sizes; }
@@ -87,6 +93,20 @@ class World {
   void fill();
   void spawn(double t_s);
   void handle_events(double t_end_s);
+  void sample_ground(double t_end_s);
+  void add_ground_effects(Frame& frame) const;
+  /// What the running totals count of one impact.
+  struct Tally {
+    double time_s = 0.0;
+    float weight = 1.0f;
+    bool splash = false;
+    bool ripple = false;
+  };
+  Tally record_impact(const GroundImpact& impact);
+  void count(const Tally& tally);
+  void count_until(double t_end_s);
+  /// How long an impact still shows (splash droplets or ripples), s.
+  [[nodiscard]] double impact_memory_s() const;
   [[nodiscard]] int thread_count() const;
   void check_cancel() const;
 
@@ -96,10 +116,22 @@ class World {
   Wind m_wind;
   DropSizeModel m_sizes;
   SpawnRegion m_region;
+  PuddleField m_puddles;
+  GroundDetail m_detail;
+  ImpactSampler m_sampler;
   LightningSchedule m_schedule;
   std::vector<LightningSchedule::Strike> m_strikes;
   DropState m_state;
-  SplashState m_splash;
+  std::vector<GroundImpact> m_impacts;
+  std::int64_t m_next_slot = 0;    // first ground-impact slot not sampled yet
+  std::vector<Tally> m_uncounted;  // sampled impacts still ahead of the clock, by time
+  std::size_t m_uncounted_next = 0;
+  // Splash droplets in flight at the last snapshot, kept in whole flight steps (splash.h), so
+  // that each snapshot continues their flights instead of repeating them: the same droplets
+  // whatever the snapshots taken. A cache of snapshot(), hence mutable.
+  mutable std::vector<FlyingDroplet> m_flying;
+  mutable double m_flying_until_s = -1e300;  // impacts up to this time are launched
+  double m_volume_start_s = 0.0;             // when the volume's drops began (start of the prewarm)
   std::vector<StepEvents> m_events;
   std::vector<std::uint32_t> m_removals;
   std::int64_t m_step = 0;  // substeps taken since the start of the prewarm
@@ -108,7 +140,10 @@ class World {
   int m_merge_every = 1;
   double m_ground_water_m3 = 0.0;
   std::uint64_t m_ground_hits = 0;
-  std::uint64_t m_splash_events = 0;
+  double m_ground_impacts = 0.0;
+  double m_splash_events = 0.0;
+  double m_ripple_events = 0.0;
+  std::uint64_t m_ground_impacts_simulated = 0;
   std::uint64_t m_merges = 0;
   std::uint64_t m_breakups = 0;
 };

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "sim/splash.h"
 #include "sim/terminal_velocity.h"
 
 namespace raintrace::sim {
@@ -189,7 +190,9 @@ bool same_frame(const Frame& a, const Frame& b) {
   return same(a.drops.id, b.drops.id) && same(a.drops.position, b.drops.position) &&
          same(a.drops.velocity, b.drops.velocity) && same(a.drops.diameter, b.drops.diameter) &&
          same(a.drops.acceleration, b.drops.acceleration) && same(a.drops.age, b.drops.age) &&
-         same(a.drops.opacity, b.drops.opacity) && same(a.splashes.position, b.splashes.position) &&
+         same(a.drops.opacity, b.drops.opacity) && same(a.splashes.id, b.splashes.id) &&
+         same(a.splashes.position, b.splashes.position) &&
+         same(a.splashes.opacity, b.splashes.opacity) && same(a.ripples, b.ripples) &&
          a.flash == b.flash && a.bolts.size() == b.bolts.size();
 }
 
@@ -244,22 +247,88 @@ TEST(World, WaterReachingTheGroundMatchesTheRainRate) {
   }
 }
 
-TEST(World, SplashesAppearWhereDropsHitVisibleGround) {
+TEST(World, SplashesAndRipplesComeFromRecentImpacts) {
   SimParams p = small_scene();
   p.camera.look_at = {0.0, 0.0, 0.0};  // looking down at the ground in front
-  p.splashes.droplets = 5;
+  p.puddles.coverage = 0.3;
   World world(p);
-  world.advance_to(0.3);  // longer than a droplet's life: every live droplet is from t > 0
+  world.advance_to(0.5);
   const Frame f = world.snapshot(1);
-  ASSERT_GT(f.splash_events, 0u);
+  ASSERT_GT(f.splash_events, 0.0);
+  ASSERT_GT(f.ripple_events, 0.0);
   ASSERT_GT(f.splashes.size(), 0u);
-  // Droplets live 0.15 s, so at most the last ~0.15 s of splashes are alive.
-  EXPECT_LE(f.splashes.size(), f.splash_events * 5);
-  for (std::size_t i = 0; i < f.splashes.size(); ++i) {
-    EXPECT_GE(f.splashes.position[i].y, 0.0f);
-    EXPECT_LE(f.splashes.position[i].y, 0.5f);  // v_up <= 0.35·9 m/s → apex < 0.5 m
-    EXPECT_GT(f.splashes.opacity[i], 0.0f);
-    EXPECT_LE(f.splashes.opacity[i], 1.0f);
+  ASSERT_GT(f.ripples.size(), 0u);
+  // Every droplet is above the ground within reach of an impact of the last lifetime_s that
+  // splashed (mid-sized droplets of big drops fly up to ~1 m).
+  std::vector<const GroundImpact*> splashed;
+  for (const GroundImpact& i : world.ground_impacts()) {
+    const double age = f.time_s - i.time_s;
+    if (age >= 0.0 && age < p.splashes.lifetime_s &&
+        splashes(i.diameter_m, -i.velocity.y, i.water_depth_m)) {
+      splashed.push_back(&i);
+    }
+  }
+  for (std::size_t k = 0; k < f.splashes.size(); ++k) {
+    const glm::vec3 d = f.splashes.position[k];
+    EXPECT_GE(d.y, 0.0f);
+    EXPECT_GT(f.splashes.opacity[k], 0.0f);
+    bool near = false;
+    for (const GroundImpact* i : splashed) {
+      near = near || std::hypot(d.x - i->position.x, d.z - i->position.z) < 1.5;
+    }
+    EXPECT_TRUE(near) << "droplet " << k << " at " << d.x << ", " << d.y << ", " << d.z;
+  }
+  // Ripples sit on impacts: a puddle's rings, or a film's short ones.
+  for (const Ripple& r : f.ripples) {
+    bool found = false;
+    for (const GroundImpact& i : world.ground_impacts()) {
+      found = found || (i.position.x == r.x && i.position.z == r.z &&
+                        std::abs(f.time_s - i.time_s - r.age_s) < 1e-4);
+    }
+    EXPECT_TRUE(found);
+    EXPECT_LT(r.age_s, r.lifetime_s);
+  }
+}
+
+TEST(World, AFallingDropLandsWhereItLandsOnce) {
+  // Drops of the volume about to land inside its footprint become impacts keyed by their id at
+  // their landing point, and no sampled impact lands inside the footprint while they do.
+  SimParams p = small_scene();
+  p.camera.look_at = {0.0, 0.0, 0.0};
+  p.camera.width_px = 100000;  // every impact kept by the level of detail
+  World world(p);
+  world.advance_to(0.1);
+  struct Landing {
+    std::uint64_t id;
+    glm::vec3 position;
+  };
+  std::vector<Landing> landing;
+  const Drops& d = world.drops();
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    // 1 cm above the ground and falling: lands within the next substeps.
+    const glm::dvec3 ahead = glm::dvec3(d.position[i]) +
+                             glm::dvec3(d.velocity[i]) * double(d.position[i].y / -d.velocity[i].y);
+    if (d.position[i].y < 0.01f && world.region().in_measure_area({ahead.x, 0.0, ahead.z})) {
+      landing.push_back({d.id[i], glm::vec3(ahead)});
+    }
+  }
+  ASSERT_GT(landing.size(), 10u);
+  world.advance_to(0.12);
+  for (const Landing& l : landing) {
+    int found = 0;
+    for (const GroundImpact& i : world.ground_impacts()) {
+      if (i.key != l.id) continue;
+      ++found;
+      EXPECT_NEAR(i.position.x, l.position.x, 2e-3f);
+      EXPECT_NEAR(i.position.z, l.position.z, 2e-3f);
+    }
+    EXPECT_EQ(found, 1) << "drop " << l.id;
+  }
+  // (Before the volume's drops started, the prewarm's beginning, the sampler covers it too.)
+  for (const GroundImpact& i : world.ground_impacts()) {
+    if ((i.key >> 63) != 0 && i.time_s >= -p.prewarm_s) {
+      EXPECT_FALSE(world.region().in_measure_area(glm::dvec3(i.position)));
+    }
   }
 }
 

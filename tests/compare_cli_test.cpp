@@ -103,6 +103,49 @@ TEST_F(CompareCli, DifferentSizesExitTwoNamingBothFilesAndSizes) {
   EXPECT_NE(r.output.find((m_dir / "out/a.png").string()), std::string::npos) << r.output;
 }
 
+/// A night frame in scene-linear light, as POV-Ray's EXRs hold it: a dark facade at 0.02 with
+/// one lamp pixel at `lamp`.
+Image night(float lamp) {
+  Image img(32, 18, 3, 0.02f);
+  for (int c = 0; c < 3; ++c) img.at(16, 9, c) = lamp;
+  return img;
+}
+
+TEST_F(CompareCli, RenderFoldersComparePngsOrWithHdrTheirExrsDevelopedOrLinear) {
+  // Two render folders (images/ holds each frame as EXR and PNG) with the same PNGs; the
+  // candidate's EXR has its lamp 1 % brighter (300 → 303), which no viewer can see: the lamp is
+  // white either way (Filmic clips only above 16.29), but in linear units 3.0 outweighs all else.
+  write("ref/frame_0001.png", grey(32, 18, 0.25f));
+  write("out/frame_0001.png", grey(32, 18, 0.25f));
+  write("ref/frame_0001.exr", night(300.0f));
+  write("out/frame_0001.exr", night(303.0f));
+  const std::string folders = path("ref") + " " + path("out");
+  const auto pngs = raintrace_compare(folders);
+  EXPECT_EQ(pngs.exit_code, 0) << pngs.output;
+  EXPECT_NE(pngs.output.find("frame_0001.png"), std::string::npos) << pngs.output;
+  EXPECT_EQ(pngs.output.find("frame_0001.exr"), std::string::npos) << pngs.output;
+  EXPECT_EQ(pngs.output.find("developed"), std::string::npos) << pngs.output;
+
+  // --hdr: the EXRs, developed with the curve alone, equal to within one 8-bit step.
+  const auto developed = raintrace_compare(folders + " --hdr --fail 0.0039");
+  EXPECT_EQ(developed.exit_code, 0) << developed.output;
+  EXPECT_NE(developed.output.find("frame_0001.exr"), std::string::npos) << developed.output;
+  EXPECT_NE(developed.output.find("HDR input developed for comparison: raintrace develop: "
+                                  "exposure_ev=0 view=filmic look=medium-high-contrast bloom=0 "
+                                  "grain=0 vignette=0"),
+            std::string::npos)
+      << developed.output;
+  const auto darker = raintrace_compare(folders + " --hdr --exposure-ev -1 --look high-contrast");
+  EXPECT_NE(darker.output.find("exposure_ev=-1 view=filmic look=high-contrast"), std::string::npos)
+      << darker.output;
+
+  // --linear: the stored values; 3.0 fails an absolute threshold, passes a 2 % relative one.
+  EXPECT_EQ(raintrace_compare(folders + " --hdr --linear --fail 0.01").exit_code, 1);
+  const auto relative =
+      raintrace_compare(folders + " --hdr --linear --fail 0.01 --fail-relative 0.02");
+  EXPECT_EQ(relative.exit_code, 0) << relative.output;
+}
+
 TEST_F(CompareCli, UnreadableOrMissingInputExitsTwo) {
   write("ref/a.png", grey(8, 8, 0.5f));
   std::ofstream(m_dir / "out/a.png") << "not a png";

@@ -1,0 +1,113 @@
+// Ring ripple model (see ripples.h).
+#include "sim/ripples.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "sim/splash.h"
+#include "sim/terminal_velocity.h"
+
+namespace raintrace::sim {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+/// Kinematic viscosity of water at 20 °C, m²/s.
+constexpr double kKinematicViscosity = kWaterViscosity / kWaterDensity;
+/// Packet half-width in wavelengths: two crests and a trough stand out.
+constexpr double kPacketWidth = 0.6;
+/// The pixel filter's standard deviation, in pixel spans: exp(−(π/s·σ)²/2) = e⁻² at Nyquist.
+constexpr double kPixelSigma = 2.0 / kPi;
+/// The thin film's ripples live h²/ν, kept within [kFilmLifetimeMin, kFilmLifetimeMax] s.
+constexpr double kFilmLifetimeMin = 0.02;
+constexpr double kFilmLifetimeMax = 0.2;
+
+}  // namespace
+
+double ripple_speed() {
+  return std::pow(4.0 * kGravity * kWaterSurfaceTension / kWaterDensity, 0.25);
+}
+
+double ripple_wavelength() {
+  return 2.0 * kPi * std::sqrt(kWaterSurfaceTension / (kWaterDensity * kGravity));
+}
+
+Ripple make_ripple(const glm::vec3& position, float diameter_m, double age_s, double water_depth_m,
+                   bool on_puddle, double puddle_lifetime_s) {
+  Ripple r;
+  r.x = position.x;
+  r.z = position.z;
+  r.age_s = static_cast<float>(age_s);
+  r.on_puddle = on_puddle;
+  double lifetime = puddle_lifetime_s;
+  double amplitude = kRippleAmplitudePerDiameter * diameter_m;
+  if (!on_puddle) {
+    lifetime = std::clamp(water_depth_m * water_depth_m / kKinematicViscosity, kFilmLifetimeMin,
+                          kFilmLifetimeMax);
+    amplitude = std::min(amplitude, 0.5 * water_depth_m);
+  }
+  if (!(age_s >= 0.0) || age_s >= lifetime || !(amplitude > 0.0)) return r;
+  r.lifetime_s = static_cast<float>(lifetime);
+  r.amplitude_m = static_cast<float>(amplitude);
+  // The ring starts at the crater's edge, about a drop diameter out.
+  r.start_radius_m = diameter_m;
+  return r;
+}
+
+double ripple_slope_rms(double rate_mm_per_h, double lifetime_s) {
+  const double k = 2.0 * kPi / ripple_wavelength();
+  const double w = kPacketWidth * ripple_wavelength();
+  const double alpha = kRippleAmplitudePerDiameter;
+  const double water_m_per_s = rate_mm_per_h * 1e-3 / 3600.0;
+  const double mean_square = std::pow(kPi, 1.5) * k * k * alpha * alpha * w * lifetime_s / 5.0 *
+                             (6.0 / kPi) * water_m_per_s;
+  return std::sqrt(mean_square);
+}
+
+double stirred_radius(const Ripple& ripple) {
+  return ripple.start_radius_m + ripple_speed() * ripple.age_s + kPacketWidth * ripple_wavelength();
+}
+
+double film_stir(const Ripple& ripple) {
+  if (!(ripple.lifetime_s > 0.0f)) return 0.0;
+  const double fade = 1.0 - ripple.age_s / ripple.lifetime_s;
+  return fade * fade;
+}
+
+double ripple_reach(const Ripple& ripple) {
+  const double front = ripple.start_radius_m + ripple_speed() * ripple.age_s;
+  return front + 3.0 * kPacketWidth * ripple_wavelength();
+}
+
+RippleSample ripple_at(const Ripple& ripple, double x, double z, const PixelSpan& span) {
+  RippleSample s;
+  if (!(ripple.lifetime_s > 0.0f)) return s;
+  const double t = ripple.age_s;
+  const double front = ripple.start_radius_m + ripple_speed() * t;
+  const double fade = 1.0 - t / ripple.lifetime_s;
+  const double k = 2.0 * kPi / ripple_wavelength();
+  const double dx = x - ripple.x, dz = z - ripple.z;
+  const double r = std::sqrt(dx * dx + dz * dz);
+  // cos θ between the radius (the wave's direction here) and the line of sight.
+  const double cos_t = r > 1e-9 ? (dx * span.dir_x + dz * span.dir_z) / r : 1.0;
+  const double sigma2 = kPixelSigma * kPixelSigma *
+                        (span.along_m * span.along_m * cos_t * cos_t +
+                         span.across_m * span.across_m * (1.0 - cos_t * cos_t));
+  const double amplitude = ripple.amplitude_m * std::sqrt(ripple.start_radius_m / front) * fade *
+                           fade * std::exp(-0.5 * k * k * sigma2);
+  const double w = kPacketWidth * ripple_wavelength();
+  const double xi = r - front;
+  if (std::abs(xi) > 3.0 * w || amplitude == 0.0) return s;
+  const double envelope = std::exp(-0.5 * xi * xi / (w * w));
+  const double c = std::cos(k * xi), sn = std::sin(k * xi);
+  s.height = amplitude * envelope * c;
+  // d/dr of envelope·cos(kξ) = envelope·(−ξ/w²·cos − k·sin).
+  const double dh_dr = amplitude * envelope * (-xi / (w * w) * c - k * sn);
+  if (r > 1e-9) {
+    s.slope_x = dh_dr * dx / r;
+    s.slope_z = dh_dr * dz / r;
+  }
+  return s;
+}
+
+}  // namespace raintrace::sim

@@ -1,0 +1,80 @@
+// Ring ripples from drop impacts on standing water, as a height field over the ground.
+//
+// A drop hitting water sends out a packet of capillary-gravity waves. Their group velocity has
+// a minimum, c_min = (4gσ/ρ)^(1/4) ≈ 0.231 m/s at λ_min = 2π·√(σ/(ρg)) ≈ 1.71 cm, where it
+// equals the phase velocity; energy piles up there, so the ring a viewer sees expands at
+// ≈ c_min with crests ≈ λ_min apart (Lamb, Hydrodynamics §267; Lighthill, Waves in Fluids
+// §3.7). The model draws that ring: h(r, t) = a(t)·exp(−ξ²/(2w²))·cos(k·ξ), ξ = r − r_f(t),
+// r_f = r0 + c_min·t, k = 2π/λ_min, w = 0.6·λ_min (two crests and a trough). The amplitude
+// spreads with the ring, a ∝ √(r0/r_f) (energy conserved on a circle), starts at
+// a0 = kRippleAmplitudePerDiameter·D and fades to 0 by the ripple's lifetime with (1 − t/T)².
+// T is ripples.lifetime_s on a puddle (about half a second: viscous and bottom damping of
+// a 1.7 cm wave are slower, ~2 s for a 5 mm puddle, but the spreading ring has fallen below what
+// a reflection shows by then); on the thin film outside puddles the bottom stops the wave
+// within T = h²/ν (0.09 s for 0.3 mm), and the film caps the amplitude at half its depth.
+//
+// Seen from a camera, a pixel averages the ring over the ground it spans: s_c across the line of
+// sight, s_a along it (longer: the ground is seen at a slant). The oscillating part is
+// attenuated by exp(−k²·(σ_a²·cos²θ + σ_c²·sin²θ)/2), θ between the ring's radius and the line of
+// sight, σ = 0.64 of the span: a Gaussian that takes a wave at the pixel grid's Nyquist limit
+// (two pixels a wavelength) down to e⁻² keeps it from aliasing into blotches, and rings fade out
+// smoothly with distance, first where the slant squeezes them.
+#pragma once
+
+#include "sim/frame.h"
+
+namespace raintrace::sim {
+
+/// Capillary-gravity minimum: ring speed (m/s) and wavelength (m) for water at 20 °C.
+double ripple_speed();
+double ripple_wavelength();
+
+/// First crest height per metre of drop diameter (a 2 mm drop: 0.5 mm; its first ring tilts the
+/// water by ~10° at 1 cm and ~1° at 10 cm, enough to break a reflection). Chosen by eye: no
+/// measurement of ring amplitudes from raindrops was found to calibrate it.
+inline constexpr double kRippleAmplitudePerDiameter = 0.25;
+
+/// The ripple of one impact `age_s` after it, or a ripple with lifetime 0 when it has faded
+/// (age >= lifetime) or makes none. water_depth_m: puddle depth or film thickness;
+/// puddle_lifetime_s: ripples.lifetime_s; on_puddle: rings of ripples.lifetime_s, otherwise the
+/// film's short ones.
+Ripple make_ripple(const glm::vec3& position, float diameter_m, double age_s, double water_depth_m,
+                   bool on_puddle, double puddle_lifetime_s);
+
+/// The ground one pixel spans: across_m across the line of sight, along_m along its horizontal
+/// direction (dir_x, dir_z), a unit vector. Zero spans: no filtering.
+struct PixelSpan {
+  double across_m = 0.0;
+  double along_m = 0.0;
+  double dir_x = 0.0, dir_z = 1.0;
+};
+
+/// Height (m) and its gradient (dh/dx, dh/dz) of one ripple at ground point (x, z), as a
+/// pixel spanning `span` there sees it (filtered as above).
+struct RippleSample {
+  double height = 0.0;
+  double slope_x = 0.0;
+  double slope_z = 0.0;
+};
+RippleSample ripple_at(const Ripple& ripple, double x, double z, const PixelSpan& span = {});
+
+/// Largest distance from its centre at which the ripple is not flat (m).
+double ripple_reach(const Ripple& ripple);
+
+/// A film ripple as a stirred patch: within radius stirred_radius() of the impact (the ring's
+/// front plus a packet width) the film is disturbed with strength film_stir() — 1 when fresh,
+/// fading with the ring as (1 − t/T)². The renderer darkens the film's reflection by it,
+/// spread over a pixel where the patch is smaller than one: it stays an effect of the impact's
+/// place and time, never a ring smoothed to nothing.
+double stirred_radius(const Ripple& ripple);
+double film_stir(const Ripple& ripple);
+
+/// Root-mean-square slope of standing water under rain of `rate_mm_per_h` whose rings last
+/// `lifetime_s`: the roughness of a puddle seen from too far for its rings to be drawn.
+/// Each ring contributes ∫∫ ½·(k·a(t)·envelope)² dA dt = π^{3/2}·k²·a0²·r0·w·T/5 with
+/// a0 = αD, r0 = D (∝ D³), so summed over the rain's drops per m² and s, whatever their sizes,
+/// the mean square slope is π^{3/2}·k²·α²·w·T/5 · (6/π)·(rain rate in m/s): D³ summed over the
+/// flux is 6/π times the water volume falling per m² and s. 5 mm/h, 0.5 s: 0.011.
+double ripple_slope_rms(double rate_mm_per_h, double lifetime_s);
+
+}  // namespace raintrace::sim
