@@ -1,8 +1,10 @@
 // Tests that every example scene and the complete example in docs/scene-format.md load, and
 // that the examples show what their comment headers say (the paper's figures).
 #include <gtest/gtest.h>
+
 #include <filesystem>
 #include <fstream>
+#include <glm/geometric.hpp>
 #include <sstream>
 
 #include "cli/scene.h"
@@ -88,13 +90,16 @@ TEST(Examples, StreaksUseALongExposure) {
   EXPECT_GE(example("streaks").sim.camera.exposure_s, 4 * sim::Camera{}.exposure_s);
 }
 
-TEST(Examples, CloseupHasFewBigDropsNearTheCamera) {
+TEST(Examples, CloseupIsAMacroShotOfTheDropWithTheRestOutOfFocus) {
   const Scene scene = example("closeup");
   EXPECT_EQ(scene.look.environment.name, "closeup");
-  EXPECT_GE(scene.sim.rain.diameter_min_mm, 2.0);
-  EXPECT_LE(scene.sim.rain.far_m, 2.0);
-  // Every simulated drop is near enough to be a refractive sphere.
-  EXPECT_GE(scene.look.sphere_distance_m, scene.sim.rain.far_m);
+  // closeup.inc's big drop sits at the origin; the lens focuses on it from a few centimetres.
+  EXPECT_LT(glm::length(scene.sim.camera.look_at), 0.003);
+  EXPECT_LT(glm::length(scene.sim.camera.position - scene.sim.camera.look_at), 0.05);
+  // An open aperture: everything but the drop is blurred.
+  EXPECT_GT(scene.look.aperture_m, 0.0);
+  // The falling rain lies behind the drop, out of focus.
+  EXPECT_GT(scene.sim.rain.near_m, 0.1);
 }
 
 /// The ```toml block that follows `marker` in the file.

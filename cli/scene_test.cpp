@@ -57,6 +57,9 @@ TEST(LoadScene, EmptyFileGivesTheStructDefaults) {
   EXPECT_EQ(scene.sim.lightning.strikes_per_minute, sim.lightning.strikes_per_minute);
   EXPECT_EQ(scene.sim.lightning.generations, sim.lightning.generations);
   EXPECT_EQ(scene.sim.lightning.cloud_height_m, sim.lightning.cloud_height_m);
+  EXPECT_EQ(scene.sim.lightning.azimuth_deg, sim.lightning.azimuth_deg);
+  EXPECT_EQ(scene.sim.lightning.azimuth_spread_deg, sim.lightning.azimuth_spread_deg);
+  EXPECT_EQ(scene.sim.lightning.distance_m, sim.lightning.distance_m);
   EXPECT_EQ(scene.sim.lightning.distance_min_m, sim.lightning.distance_min_m);
   EXPECT_EQ(scene.sim.lightning.distance_max_m, sim.lightning.distance_max_m);
   EXPECT_EQ(scene.sim.lightning.trunk_radius_m, sim.lightning.trunk_radius_m);
@@ -124,6 +127,9 @@ enabled = true
 strikes_per_minute = 12
 generations = 4
 cloud_height_m = 500
+azimuth_deg = -12.5
+azimuth_spread_deg = 40
+distance_m = 650
 distance_min_m = 100
 distance_max_m = 200
 trunk_radius_m = 0.8
@@ -193,6 +199,9 @@ ground_y_m = -0.5
   EXPECT_EQ(scene.sim.lightning.strikes_per_minute, 12.0);
   EXPECT_EQ(scene.sim.lightning.generations, 4);
   EXPECT_EQ(scene.sim.lightning.cloud_height_m, 500.0);
+  EXPECT_EQ(scene.sim.lightning.azimuth_deg, -12.5);
+  EXPECT_EQ(scene.sim.lightning.azimuth_spread_deg, 40.0);
+  EXPECT_EQ(scene.sim.lightning.distance_m, 650.0);
   EXPECT_EQ(scene.sim.lightning.distance_min_m, 100.0);
   EXPECT_EQ(scene.sim.lightning.distance_max_m, 200.0);
   EXPECT_EQ(scene.sim.lightning.trunk_radius_m, 0.8);

@@ -91,6 +91,10 @@ struct GroundLook {
 
 struct ExportParams {
   sim::Camera camera;
+  /// Diameter of the lens opening; 0 is a pinhole: everything sharp. Otherwise the camera
+  /// focuses on camera.look_at and blurs the rest (POV-Ray focal blur): a point at distance d,
+  /// the focus at f, spreads over a disc of aperture_m·|d − f|/d at the plane of focus.
+  double aperture_m = 0.0;
   /// The rain as simulated (cli/ copies it from the scene, like the camera): its drop sizes and
   /// rate give the rain medium beyond rain.far_m (rain_medium_text()).
   sim::RainParams rain;
@@ -141,9 +145,11 @@ struct ExportParams {
   double lightning_light = 8.0;
 };
 
-/// ExportParams' own keys, in three sections: [output] (after cli's `frames`), [export] and
-/// [lightning] light. Its camera is sim::kCameraParams, fog and environment their own tables.
+/// ExportParams' own keys, in four sections: [camera] aperture_m, [output] (after cli's
+/// `frames`), [export] and [lightning] light. Its camera is sim::kCameraParams, fog and
+/// environment their own tables.
 inline constexpr sim::Param<ExportParams> kExportParams[] = {
+    sim::number("camera", "aperture_m", &ExportParams::aperture_m, "m", sim::Range::closed(0, 1)),
     sim::number("output", "fps", &ExportParams::fps, "1/s", sim::Range::open_closed(0, 240)),
     sim::integer("output", "width", &ExportParams::width, "pixels", 16, 8192),
     sim::integer("output", "height", &ExportParams::height, "pixels", 16, 8192),

@@ -291,6 +291,29 @@ void write_streak_mesh(Emitter& out, const std::vector<StreakValue>& streaks,
   out.text("}\ntexture{RT_StreakTexture}\nno_shadow hollow\n}\n");
 }
 
+// How far a bolt's glow reaches, in radii of its channel.
+constexpr float kBoltGlowRadii = 8.0f;
+
+void write_cylinder(Emitter& out, const CylinderValue& c, float radius) {
+  out.text("cylinder{<");
+  out.number(c.start.x);
+  out.text(",");
+  out.number(c.start.y);
+  out.text(",");
+  out.number(c.start.z);
+  out.text(">,<");
+  out.number(c.end.x);
+  out.text(",");
+  out.number(c.end.y);
+  out.text(",");
+  out.number(c.end.z);
+  out.text(">,");
+  out.number(radius);
+}
+
+// Each group of segments twice: the channel itself (RT_BoltCore, widened to at least half a
+// pixel with its light scaled to match), and around it the light that rain and cloud scatter out
+// of it (RT_BoltGlow, scene.inc), a merge so that segments meeting at a joint do not glow twice.
 void write_bolts(Emitter& out, const std::vector<BoltValue>& bolts) {
   if (bolts.empty()) return;
   // Bolts are light, not rain: the rain mask leaves them out.
@@ -299,23 +322,17 @@ void write_bolts(Emitter& out, const std::vector<BoltValue>& bolts) {
     if (bolt.segments.empty()) continue;
     out.text("union{\n");
     for (const CylinderValue& c : bolt.segments) {
-      out.text("cylinder{<");
-      out.number(c.start.x);
-      out.text(",");
-      out.number(c.start.y);
-      out.text(",");
-      out.number(c.start.z);
-      out.text(">,<");
-      out.number(c.end.x);
-      out.text(",");
-      out.number(c.end.y);
-      out.text(",");
-      out.number(c.end.z);
-      out.text(">,");
-      out.number(c.radius);
+      write_cylinder(out, c, c.core_radius);
+      out.text(" RT_BoltCore(");
+      out.number(c.core_radius > 0.0f ? bolt.brightness * c.radius / c.core_radius : 0.0f);
+      out.text(")}\n");
+    }
+    out.text("no_shadow hollow\n}\nmerge{\n");
+    for (const CylinderValue& c : bolt.segments) {
+      write_cylinder(out, c, c.radius * kBoltGlowRadii);
       out.text("}\n");
     }
-    out.text("RT_BoltTexture(");
+    out.text("RT_BoltGlow(");
     out.number(bolt.brightness);
     out.text(")\nno_shadow hollow\n}\n");
   }

@@ -28,7 +28,7 @@ TEST(FrameText, GoldenTinyFrame) {
                     glm::vec3{0.5f, 1.0f, 4.0f}, glm::vec3{0.0f, 1.0f, 4.0f}};
   streak.cell = 0;
   values.streaks.push_back(streak);
-  values.bolts.push_back({{{{0.0f, 100.0f, 50.0f}, {2.0f, 0.0f, 50.0f}, 0.5f}}, 0.25f});
+  values.bolts.push_back({{{{0.0f, 100.0f, 50.0f}, {2.0f, 0.0f, 50.0f}, 0.5f, 1.0f}}, 0.25f});
   const std::string expected =
       "// raintrace frame 7\n"
       "#version 3.7;\n"
@@ -60,8 +60,12 @@ TEST(FrameText, GoldenTinyFrame) {
       "}\n"
       "#if(RT_Mask=0)\n"
       "union{\n"
-      "cylinder{<0,100,50>,<2,0,50>,0.5}\n"
-      "RT_BoltTexture(0.25)\n"
+      "cylinder{<0,100,50>,<2,0,50>,1 RT_BoltCore(0.125)}\n"
+      "no_shadow hollow\n"
+      "}\n"
+      "merge{\n"
+      "cylinder{<0,100,50>,<2,0,50>,4}\n"
+      "RT_BoltGlow(0.25)\n"
       "no_shadow hollow\n"
       "}\n"
       "#end\n";
@@ -82,7 +86,7 @@ TEST(FrameText, FrameWithABoltSaysSoBeforeTheSceneInclude) {
   values.index = 2;
   BoltValue bolt;
   bolt.brightness = 1.0;
-  bolt.segments.push_back({{0, 100, 200}, {5, 0, 200}, 0.5});
+  bolt.segments.push_back({{0, 100, 200}, {5, 0, 200}, 0.5, 0.5});
   values.bolts.push_back(bolt);
   const std::string text = frame_text(values);
   const auto bolts = text.find("#declare RT_Bolts=1;\n");

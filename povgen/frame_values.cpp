@@ -11,6 +11,7 @@
 #include "povgen/ordered_chunks.h"
 #include "povgen/scene_files.h"
 #include "povgen/view_frustum.h"
+#include "sim/lightning.h"
 #include "sim/random.h"
 #include "sim/streak.h"
 
@@ -276,22 +277,37 @@ void build_frame_values(const sim::Frame& frame, const ExportParams& look, Frame
   values.flash_position = default_flash_position(view);
   float brightest = -1.0f;
   for (const sim::Bolt& bolt : frame.bolts) {
-    BoltValue out;
-    out.brightness = std::clamp(bolt.brightness, 0.0f, 1.0f);
+    // One BoltValue per generation: the main channel carries every return stroke, the branches
+    // only the first, fainter with each generation.
+    const std::size_t first = values.bolts.size();
     for (const sim::BoltSegment& s : bolt.segments) {
       if (!view.segment_visible(s.start, s.end, s.radius)) continue;
-      out.segments.push_back({s.start, s.end, s.radius});
+      const auto g = static_cast<std::size_t>(std::max(s.generation, 0));
+      if (values.bolts.size() < first + g + 1)
+        values.bolts.resize(first + g + 1, BoltValue{{}, 0.0f});
+      const float depth = std::max(std::min(view.depth(s.start), view.depth(s.end)), 1e-3f);
+      const float core = std::max(s.radius, 0.5f * view.pixel_size(depth, look.width));
+      values.bolts[first + g].segments.push_back({s.start, s.end, s.radius, core});
     }
+    for (std::size_t g = 0; first + g < values.bolts.size(); ++g) {
+      const float b = g == 0 ? bolt.brightness
+                             : bolt.branch_brightness *
+                                   static_cast<float>(sim::branch_brightness(static_cast<int>(g)));
+      values.bolts[first + g].brightness = std::max(b, 0.0f);
+    }
+    values.bolts.erase(
+        std::remove_if(values.bolts.begin() + static_cast<std::ptrdiff_t>(first),
+                       values.bolts.end(), [](const BoltValue& v) { return v.segments.empty(); }),
+        values.bolts.end());
     // The light sits at the highest point of the brightest bolt, where the channel meets cloud.
-    if (!bolt.segments.empty() && out.brightness > brightest) {
-      brightest = out.brightness;
+    if (!bolt.segments.empty() && bolt.brightness > brightest) {
+      brightest = bolt.brightness;
       values.flash_position = bolt.segments.front().start;
       for (const sim::BoltSegment& s : bolt.segments) {
         if (s.start.y > values.flash_position.y) values.flash_position = s.start;
         if (s.end.y > values.flash_position.y) values.flash_position = s.end;
       }
     }
-    if (!out.segments.empty()) values.bolts.push_back(std::move(out));
   }
 
   // The wet ground: a frame that draws the environment plate shows the plate's puddles (no

@@ -27,15 +27,22 @@ struct StreakValue {
   int cell;  ///< index into the streak atlas (streak_atlas_cell)
 };
 
+/// One straight piece of a lightning channel.
 struct CylinderValue {
   glm::vec3 start;
   glm::vec3 end;
-  float radius;
+  float radius;  ///< the channel's (its glow reaches a multiple of it)
+  /// The channel as drawn: at least half a pixel, so that POV-Ray without antialiasing does not
+  /// miss a branch thinner than a pixel; its light is scaled by radius / core_radius, so the
+  /// line carries the same light as the thin channel would.
+  float core_radius;
 };
 
+/// The segments of one bolt that glow alike: its main channel, or its branches of one
+/// generation.
 struct BoltValue {
   std::vector<CylinderValue> segments;
-  float brightness;  ///< 0..1
+  float brightness;  ///< ~0..1: 1 is the first return stroke's peak in the main channel
 };
 
 struct FrameValues {

@@ -406,6 +406,34 @@ TEST(FrameValues, LightningLightSitsAtTheTopOfTheBrightestBolt) {
   EXPECT_EQ(values.bolts[0].segments.size(), 1u);
 }
 
+TEST(FrameValues, BoltBranchesFaintestLastAndNoThinnerThanHalfAPixel) {
+  sim::Frame frame;
+  sim::Bolt bolt;
+  bolt.brightness = 0.8f;         // every return stroke so far
+  bolt.branch_brightness = 0.5f;  // the first alone
+  bolt.segments.push_back({{0.0f, 60.0f, 400.0f}, {1.0f, 0.0f, 400.0f}, 0.6f, 0});
+  bolt.segments.push_back({{0.0f, 50.0f, 400.0f}, {8.0f, 40.0f, 400.0f}, 0.3f, 1});
+  bolt.segments.push_back({{8.0f, 40.0f, 400.0f}, {12.0f, 35.0f, 400.0f}, 0.15f, 2});
+  frame.bolts.push_back(bolt);
+  const ExportParams look = default_look();
+  const FrameValues values = build_frame_values(frame, look);
+  ASSERT_EQ(values.bolts.size(), 3u);  // one group per generation
+  EXPECT_FLOAT_EQ(values.bolts[0].brightness, 0.8f);
+  EXPECT_FLOAT_EQ(values.bolts[1].brightness, 0.5f * 0.35f);
+  EXPECT_FLOAT_EQ(values.bolts[2].brightness, 0.5f * 0.35f * 0.5f);
+  // 405 m from the camera a pixel is ~0.7 m across (60°, 640 px): every channel is drawn at
+  // least half that in radius, its true radius kept for the glow.
+  const float pixel = 2.0f * 405.0f * std::tan(30.0f * 3.14159265f / 180.0f) / 640.0f;
+  for (const BoltValue& group : values.bolts) {
+    ASSERT_EQ(group.segments.size(), 1u);
+    const CylinderValue& c = group.segments[0];
+    EXPECT_GE(c.core_radius, c.radius);
+    EXPECT_GE(c.core_radius, 0.45f * pixel);
+    EXPECT_LE(c.core_radius, std::max(c.radius, 0.55f * pixel));
+  }
+  EXPECT_FLOAT_EQ(values.bolts[0].segments[0].radius, 0.6f);
+}
+
 /// Number of places where a and b differ (sizes, then every field of every element).
 std::size_t differences(const FrameValues& a, const FrameValues& b) {
   std::size_t n = (a.drops.size() != b.drops.size()) + (a.streaks.size() != b.streaks.size());

@@ -16,6 +16,7 @@
 #include "povgen/frame_values.h"
 #include "povgen/output_folder.h"
 #include "povgen/povray_test_support.h"
+#include "povgen/scene_files.h"
 #include "povgen/test_support/synthetic_rain.h"
 
 namespace raintrace::povgen {
@@ -258,6 +259,50 @@ TEST(PovRayDeterminism, SameFrameSamePixelsWithOneOrTwoThreads) {
   const auto one = read_rgb(dir / "images" / "one.png");
   ASSERT_FALSE(one.empty());
   EXPECT_EQ(one, read_rgb(dir / "images" / "two.png"));
+  fs::remove_all(dir);
+}
+
+// [camera] aperture_m is the lens opening: a sharp edge 10 m away, seen by a camera focused at
+// 1 m, blurs over a disc D = aperture_m · (10 − 1)/10 across at the plane of focus (thin-lens
+// geometry). Measured in linear light (EXR) from where the bright side starts to dim (< 0.98) to
+// where the dark side starts to brighten (> 0.02): a disc sliced by the edge covers 2 % of its
+// area when the slice is 0.895 of its radius from the centre, so those points lie 0.895·D apart.
+TEST(PovRayFocalBlur, AnEdgeBehindTheFocusBlursOverTheLensOpening) {
+  SKIP_WITHOUT_POVRAY();
+  ExportParams look;
+  look.width = look.height = 200;
+  look.quality = Quality::final;
+  look.camera.position = {0.0, 0.0, 0.0};
+  look.camera.look_at = {0.0, 0.0, 1.0};
+  look.camera.fov_deg = 20.0;
+  look.aperture_m = 0.04;
+  const std::string inc = scene_inc_text(look);
+  const std::size_t camera = inc.find("camera{");
+  ASSERT_NE(camera, std::string::npos);
+  const fs::path dir = testing::scratch_folder("povray_test_focal_blur");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  write_file_atomic(dir / "edge.pov",
+                    "#version 3.7;\nglobal_settings{assumed_gamma 1}\n" +
+                        inc.substr(camera, inc.find('\n', camera) - camera) +
+                        "\nplane{-z,-10 pigment{function{x<0}} finish{ambient 0 diffuse 0 "
+                        "emission 1}}\n");
+  ASSERT_EQ(run_povray(dir, "edge.pov +W200 +H200 -A +FE +Oedge.exr"), 0) << log_of(dir);
+  const auto px = read_rgb(dir / "edge.exr");
+  ASSERT_EQ(px.size(), 200u * 200u * 3u);
+  int first_dim = -1, last_lit = -1;
+  for (int x = 0; x < 200; ++x) {
+    // Average a band of rows: focal blur samples leave a little grain on single pixels.
+    float v = 0.0f;
+    for (int y = 90; y < 110; ++y) v += px[3 * (y * 200 + x)] / 20.0f;
+    if (first_dim < 0 && v < 0.98f) first_dim = x;
+    if (v > 0.02f) last_lit = x;
+  }
+  // Pixels at the plane of focus: 2·tan(10°) m over 200 pixels.
+  const double pixel = 2.0 * std::tan(10.0 * M_PI / 180.0) / 200.0;
+  const double spread = (last_lit - first_dim + 1) * pixel;
+  // ±10 %: a pixel at each end is 5 % of the ~18 pixels, the rest focal-blur grain.
+  EXPECT_NEAR(spread, 0.895 * 0.04 * 0.9, 0.1 * 0.895 * 0.04 * 0.9) << "edge spread " << spread;
   fs::remove_all(dir);
 }
 

@@ -50,6 +50,20 @@ std::string fog_text(const FogParams& fog, const sim::Camera& camera) {
   return text;
 }
 
+// Depth of field, focused on look_at. POV-Ray's `aperture` blurs as a lens opening half its
+// value across (measured: an edge 9 m behind a plane of focus at 1 m spreads over 0.45·aperture
+// at that plane, as a lens of diameter aperture/2 gives), hence 2·aperture_m. Samples per pixel
+// adapt between the two blur_samples numbers until the pixel's estimate is stable (confidence,
+// variance); POV-Ray places them by a fixed pattern, so pixels repeat across runs and thread
+// counts. Preview takes fewer: grainier discs, the same picture.
+std::string focal_blur_text(const ExportParams& look) {
+  if (!(look.aperture_m > 0.0)) return {};
+  const bool preview = look.quality == Quality::preview;
+  return " aperture " + format_number(2.0 * look.aperture_m) + " blur_samples " +
+         (preview ? "4,16" : "16,128") + " focal_point " + vec(look.camera.look_at) +
+         " confidence 0.95 variance 1/2000";
+}
+
 // The environment plate in scene.inc: decides per frame whether to draw it, then includes the
 // environment (lights only when the plate stands in for its surfaces) and the plate itself, a
 // rectangle filling the camera's view at RT_PlateDistance so each pixel's ray meets the centre
@@ -93,6 +107,28 @@ std::string environment_with_plate_text(const ExportParams& look, const std::str
       "RT_CameraPosition}\n";
   text += "#end\n";
   return text;
+}
+
+// The lightning channel's look, called by the frames for each group of bolt segments (the main
+// channel, the branches of one generation) with its brightness B (~0..1, sim::Bolt). Scene-
+// linear for an HDR frame: the channel itself far brighter than any lamp (60·B, white in any
+// filmic view), and around it the light the rain and cloud scatter out of it, 2·B at its centre
+// falling off as exp(−(2.5·b/R)²) with the distance b from the axis, R the glow cylinder's
+// radius. The glow is drawn on the surface of that cylinder: POV-Ray's aoi pattern gives the
+// angle between ray and surface, and sin(aoi) is b/R (v = 1 − asin(b/R)/π entering,
+// asin(b/R)/π leaving, hence the symmetric map); each of the two surfaces a ray crosses adds half.
+// 0.1 % opaque, it dims the sky behind by that and emits 1/1000 of its emission.
+std::string bolt_macros_text() {
+  return "#macro RT_BoltCore(B)\n"
+         " texture{pigment{rgb<0.86,0.9,1>} finish{ambient 0 diffuse 0 emission 60*B}}\n#end\n"
+         "#macro RT_BoltGlow(B)\n"
+         " texture{pigment{aoi color_map{[0 rgbt<1,1,1,0.999>] [0.0641 rgbt<0.7788,0.7788,"
+         "0.7788,0.999>]\n  [0.131 rgbt<0.3679,0.3679,0.3679,0.999>] [0.2048 rgbt<0.1054,0.1054,"
+         "0.1054,0.999>]\n  [0.2952 rgbt<0.0183,0.0183,0.0183,0.999>] [0.5 rgbt<0,0,0,0.999>]\n"
+         "  [0.7048 rgbt<0.0183,0.0183,0.0183,0.999>] [0.7952 rgbt<0.1054,0.1054,0.1054,0.999>]\n"
+         "  [0.869 rgbt<0.3679,0.3679,0.3679,0.999>] [0.9359 rgbt<0.7788,0.7788,0.7788,0.999>]\n"
+         "  [1 rgbt<1,1,1,0.999>]}}\n"
+         "  finish{ambient 0 diffuse 0 emission 1000*B*<0.8,0.85,1>}}\n#end\n";
 }
 
 }  // namespace
@@ -148,8 +184,9 @@ std::string scene_inc_text(const ExportParams& look) {
   text += "global_settings{assumed_gamma 1.0 max_trace_level 32 adc_bailout 0.004}\n";
   text += "camera{perspective location " + vec(look.camera.position) + " look_at " +
           vec(look.camera.look_at) + " right x*" + aspect + " up y angle " +
-          format_number(look.camera.fov_deg) + "}\n";
+          format_number(look.camera.fov_deg) + focal_blur_text(look) + "}\n";
   text += "#declare RT_LightningLight=" + format_number(look.lightning_light) + ";\n";
+  text += bolt_macros_text();
   text += "#declare RT_CameraPosition=" + vec(look.camera.position) + ";\n";
   text += "#ifndef(RT_LightsOnly) #declare RT_LightsOnly=0; #end\n";
   text += "#if(RT_Mask)\nbackground{rgb 0}\n#else\n";
@@ -217,7 +254,9 @@ std::string ini_text(const ExportParams& look, int frame_count, const char* pref
   }
   const int digits = frame_digits(frame_count);
   const std::string last_frame(static_cast<std::size_t>(digits), '9');
-  const bool final_quality = look.quality == Quality::final && p == "frame";
+  // Focal blur already shoots up to 128 rays through each pixel; antialiasing on top would
+  // multiply them again for edges the blur has already softened (POV-Ray's own advice).
+  const bool antialias = look.quality == Quality::final && p == "frame" && !(look.aperture_m > 0.0);
   std::string text;
   text += "; raintrace: run `povray " + std::string{p == "frame" ? "scene" : "mask"} +
           ".ini` inside this folder to render the animation.\n";
@@ -256,7 +295,7 @@ std::string ini_text(const ExportParams& look, int frame_count, const char* pref
   text += "Cyclic_Animation=off\n";
   // Quality 9 in both modes: lower levels drop refraction (5) or media (8), which are the rain.
   text += "Quality=9\n";
-  if (final_quality) {
+  if (antialias) {
     // Adaptive antialiasing without jitter: repeatable renders across runs and thread counts.
     text +=
         "Antialias=on\nSampling_Method=1\nAntialias_Threshold=0.1\nAntialias_Depth=3\n"

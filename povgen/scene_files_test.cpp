@@ -78,6 +78,25 @@ TEST(SceneFiles, QualityPicksAntialiasing) {
   EXPECT_TRUE(contains(ini_text(look, 1, "mask", "mask.pov", {1, 1}), "\nAntialias=off\n"));
 }
 
+TEST(SceneFiles, ApertureFocusesOnLookAtAndReplacesAntialiasing) {
+  ExportParams look;
+  look.quality = Quality::final;
+  EXPECT_FALSE(contains(scene_inc_text(look), "aperture"));  // a pinhole by default
+  look.camera.look_at = {0.0, 0.5, 2.0};
+  look.aperture_m = 0.004;
+  const std::string inc = scene_inc_text(look);
+  // POV-Ray's aperture value is twice the lens opening it blurs as (see focal_blur_text).
+  EXPECT_TRUE(contains(inc, " aperture 0.008 blur_samples 16,128 focal_point <0,0.5,2> "));
+  // Focal blur samples each pixel many times: no antialiasing on top.
+  EXPECT_TRUE(contains(ini_text(look, 1, "frame", "scene.pov"), "\nAntialias=off\n"));
+  look.quality = Quality::preview;
+  EXPECT_TRUE(contains(scene_inc_text(look), " blur_samples 4,16 "));
+  look.aperture_m = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(scene_inc_text(look), std::invalid_argument);
+  look.aperture_m = 2.0;
+  EXPECT_THROW(scene_inc_text(look), std::invalid_argument);
+}
+
 TEST(SceneFiles, SceneIncDeclaresRtPreviewPerQuality) {
   // Environments test RT_Preview for their cheap stand-ins; guarded so a command-line
   // Declare=RT_Preview=… wins, and declared before the environment is included.

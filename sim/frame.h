@@ -41,11 +41,16 @@ struct BoltSegment {
   int generation;   ///< 0 = trunk, 1 = branch, 2 = sub-branch, …
 };
 
-/// One lightning bolt: an L-system skeleton and how bright it is at this instant.
+/// One lightning bolt: an L-system skeleton and how bright it is in this frame.
 struct Bolt {
   std::vector<BoltSegment> segments;
-  float brightness = 0.0f;  ///< 0..1, the flash envelope at this instant (return strokes)
-  std::uint64_t id = 0;     ///< strike number (0-based, in strike order), stable across frames
+  /// The main channel: the flash envelope (all return strokes, ~0..1) averaged over the frame's
+  /// exposure; also the bolt's light on the scene.
+  float brightness = 0.0f;
+  /// The first return stroke alone, averaged the same way: the branches glow with it only
+  /// (times sim::branch_brightness(generation)).
+  float branch_brightness = 0.0f;
+  std::uint64_t id = 0;  ///< strike number (0-based, in strike order), stable across frames
 };
 
 struct Frame {
@@ -59,7 +64,7 @@ struct Frame {
   /// farther ones are drawn as the roughness they add (ripple_slope_rms()).
   std::vector<Ripple> ripples;
   std::vector<Bolt> bolts;       ///< bolts visible at this instant
-  float flash = 0.0f;            ///< 0..1, total lightning light on the scene at this instant
+  float flash = 0.0f;            ///< 0..1, total lightning light on the scene in this frame
   glm::vec3 wind_m_per_s{0.0f};  ///< wind at the camera's look-at point
 
   // Running totals since t = 0 (prewarm excluded), for statistics; added by sim/.

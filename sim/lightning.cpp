@@ -64,19 +64,29 @@ std::vector<int> fibonacci_branch_counts(int generations) {
   return counts;
 }
 
+bool is_first_strike(const LightningParams& params, std::uint64_t strike) {
+  return params.first_strike_s >= 0.0 ? strike == 0 : strike == 1;
+}
+
 BoltSkeleton build_bolt(const LightningParams& params, const Camera& camera, double ground_y_m,
                         std::uint64_t seed, std::uint64_t strike) {
   BoltRandom rng(seed, strike);
-  // Place the strike inside the horizontal field of view so that it is seen.
+  // Azimuth is measured from the camera's horizontal view direction, positive to the right
+  // (+x when looking along +z, as the camera's image has it).
   glm::dvec3 fwd = camera.look_at - camera.position;
   fwd.y = 0.0;
   fwd = glm::length(fwd) > 0.0 ? glm::normalize(fwd) : glm::dvec3{0.0, 0.0, 1.0};
-  const double half_fov = camera.fov_deg * std::numbers::pi / 360.0;
-  const double azimuth = 0.8 * half_fov * rng.symmetric();
+  // Both draws happen for every strike, so the rest of the bolt's random numbers do not depend
+  // on whether it is the first.
+  const double spread = rng.symmetric() * params.azimuth_spread_deg;
+  const double along = rng.next();
+  const bool opening = is_first_strike(params, strike);
+  const double azimuth = (params.azimuth_deg + (opening ? 0.0 : spread)) * std::numbers::pi / 180.0;
   const glm::dvec3 dir{fwd.x * std::cos(azimuth) + fwd.z * std::sin(azimuth), 0.0,
                        fwd.z * std::cos(azimuth) - fwd.x * std::sin(azimuth)};
   const double distance =
-      params.distance_min_m + rng.next() * (params.distance_max_m - params.distance_min_m);
+      opening ? params.distance_m
+              : params.distance_min_m + along * (params.distance_max_m - params.distance_min_m);
   const double height = params.cloud_height_m;
   glm::dvec3 ground_point = camera.position + distance * dir;
   ground_point.y = ground_y_m;
@@ -115,14 +125,20 @@ BoltSkeleton build_bolt(const LightningParams& params, const Camera& camera, dou
       const int parent_index = parent_begin + c % parent_count;
       const BoltBranch& parent = bolt.branches[parent_index];
       const auto& segs = parent.segments;
-      const auto at = static_cast<std::size_t>(
-          std::min<double>(static_cast<double>(segs.size()) - 1.0,
-                           rng.next() * 0.7 * static_cast<double>(segs.size())));
+      double length = 0.0;
+      for (const auto& s : segs) length += glm::length(glm::dvec3(s.end) - glm::dvec3(s.start));
+      // A branch leaves its parent somewhere along the upper 70 % of the parent's length (by
+      // length, not by step: the trunk's steps shrink toward the ground, and picking a step
+      // would put most branches near the ground, where real ones are fewest).
+      const double leave = rng.next() * 0.7 * length;
+      std::size_t at = 0;
+      for (double run = 0.0; at + 1 < segs.size(); ++at) {
+        run += glm::length(glm::dvec3(segs[at].end) - glm::dvec3(segs[at].start));
+        if (run >= leave) break;
+      }
       const glm::dvec3 start(segs[at].start);
       const glm::dvec3 pdir =
           glm::normalize(glm::dvec3(segs.back().end) - glm::dvec3(segs.front().start));
-      double length = 0.0;
-      for (const auto& s : segs) length += glm::length(glm::dvec3(s.end) - glm::dvec3(s.start));
       const glm::dvec3 side = glm::normalize(glm::dvec3{rng.symmetric(), 0.0, rng.symmetric()} +
                                              glm::dvec3{1e-3, 0.0, 0.0});
       const glm::dvec3 bdir = glm::normalize(pdir + (0.6 + 0.6 * rng.next()) * side);
@@ -143,23 +159,74 @@ BoltSkeleton build_bolt(const LightningParams& params, const Camera& camera, dou
   return bolt;
 }
 
+namespace {
+
+// Stroke j of a strike: when it starts (after the strike), how bright it peaks, and its decay
+// time constant τ. The first starts at the strike; later ones in evenly spaced slots of 4τ,
+// jittered by up to ±τ/2, so a stroke has decayed below e^−3 of its peak when the next begins.
+struct Stroke {
+  double start_s;
+  double peak;
+  double decay_s;
+};
+
+Stroke stroke(const LightningParams& params, int j, std::uint64_t seed, std::uint64_t strike) {
+  const double duration = params.flash_duration_s;
+  const int strokes = std::max(1, params.return_strokes);
+  const double start =
+      j == 0
+          ? 0.0
+          : duration * (j + 0.25 * (uniform(seed, Stream::bolt, strike, 1000 + j) - 0.5)) / strokes;
+  const double peak = j == 0 ? 1.0 : 0.6 + 0.4 * uniform(seed, Stream::bolt, strike, 2000 + j);
+  return {start, peak, duration / (4.0 * strokes)};
+}
+
+// ∫ of one stroke over [a, b] (times after the strike), the flash cut off at `duration`:
+// peak · τ · (e^−(lo−start)/τ − e^−(hi−start)/τ) over [lo, hi] = [a, b] ∩ [start, duration].
+double stroke_integral(const Stroke& s, double a, double b, double duration) {
+  const double lo = std::max(a, s.start_s);
+  const double hi = std::min(b, duration);
+  if (!(hi > lo)) return 0.0;
+  return s.peak * s.decay_s *
+         (std::exp(-(lo - s.start_s) / s.decay_s) - std::exp(-(hi - s.start_s) / s.decay_s));
+}
+
+double stroke_value(const Stroke& s, double since, double duration) {
+  if (since < s.start_s || since > duration) return 0.0;
+  return s.peak * std::exp(-(since - s.start_s) / s.decay_s);
+}
+
+}  // namespace
+
 double flash_envelope(const LightningParams& params, double since, std::uint64_t seed,
                       std::uint64_t strike) {
   const double duration = params.flash_duration_s;
   if (since < 0.0 || since > duration) return 0.0;
-  const int strokes = std::max(1, params.return_strokes);
-  const double decay = duration / (4.0 * strokes);
   double b = 0.0;
-  for (int j = 0; j < strokes; ++j) {
-    // Stroke j starts at a jittered slot; later strokes are somewhat weaker.
-    const double slot =
-        duration *
-        (j == 0 ? 0.0
-                : (j + 0.5 * (uniform(seed, Stream::bolt, strike, 1000 + j) - 0.5)) / strokes);
-    const double peak = j == 0 ? 1.0 : 0.6 + 0.4 * uniform(seed, Stream::bolt, strike, 2000 + j);
-    if (since >= slot) b = std::max(b, peak * std::exp(-(since - slot) / decay));
+  for (int j = 0; j < std::max(1, params.return_strokes); ++j) {
+    b += stroke_value(stroke(params, j, seed, strike), since, duration);
   }
-  return std::clamp(b, 0.0, 1.0);
+  return b;
+}
+
+FlashExposure flash_exposure(const LightningParams& params, double since_open_s, double exposure_s,
+                             std::uint64_t seed, std::uint64_t strike) {
+  const double duration = params.flash_duration_s;
+  FlashExposure out;
+  for (int j = 0; j < std::max(1, params.return_strokes); ++j) {
+    const Stroke s = stroke(params, j, seed, strike);
+    const double light =
+        exposure_s > 0.0
+            ? stroke_integral(s, since_open_s, since_open_s + exposure_s, duration) / exposure_s
+            : stroke_value(s, since_open_s, duration);
+    out.all_strokes += light;
+    if (j == 0) out.first_stroke = light;
+  }
+  return out;
+}
+
+double branch_brightness(int generation) {
+  return generation <= 0 ? 1.0 : 0.35 * std::pow(0.5, generation - 1);
 }
 
 LightningSchedule::LightningSchedule(const LightningParams& params, std::uint64_t seed)

@@ -28,15 +28,39 @@ struct BoltSkeleton {
   std::vector<BoltBranch> branches;  ///< ordered by generation, trunk first
 };
 
-/// The skeleton of strike number `strike`: a pure function of its arguments.
+/// True for the strike a clip opens with: the forced one (strike 0) when first_strike_s is set,
+/// otherwise the first of the random ones (strike 1). It lands at azimuth_deg and distance_m.
+bool is_first_strike(const LightningParams& params, std::uint64_t strike);
+
+/// The skeleton of strike number `strike`: a pure function of its arguments. The first strike
+/// lands at azimuth_deg from the camera's horizontal view direction, distance_m away; later
+/// ones within ±azimuth_spread_deg of it, distance_min_m to distance_max_m away.
 BoltSkeleton build_bolt(const LightningParams& params, const Camera& camera, double ground_y_m,
                         std::uint64_t seed, std::uint64_t strike);
 
-/// Flash brightness in [0, 1] at `since_strike_s` after the strike: `return_strokes` strokes
-/// spread over flash_duration_s, each a sharp rise and exponential decay, the first the
-/// brightest. 0 before the strike and after flash_duration_s.
+/// Flash brightness at `since_strike_s` after the strike: the sum of `return_strokes` strokes
+/// spread over flash_duration_s, each a sharp rise and exponential decay (time constant
+/// flash_duration_s / (4·return_strokes)), the first peaking at 1, later ones at 0.6–1. A
+/// stroke has decayed below e^−3 of its peak before the next begins, so the sum never exceeds
+/// its peaks by more than 1/(e³ − 1) ≈ 5.2 %. 0 before the strike and after flash_duration_s.
 double flash_envelope(const LightningParams& params, double since_strike_s, std::uint64_t seed,
                       std::uint64_t strike);
+
+/// What a camera records of a flash in one frame: the envelope averaged over the exposure, the
+/// shutter open from `since_open_s` after the strike for `exposure_s` (exposure_s = 0: the
+/// envelope at since_open_s). `first_stroke` is the same for the first return stroke alone:
+/// later strokes retrace the main channel only, so the branches glow with the first.
+struct FlashExposure {
+  double all_strokes = 0.0;
+  double first_stroke = 0.0;
+};
+FlashExposure flash_exposure(const LightningParams& params, double since_open_s, double exposure_s,
+                             std::uint64_t seed, std::uint64_t strike);
+
+/// Brightness of a branch of `generation` (≥ 1) relative to the first stroke in the trunk: a
+/// branch is a stepped leader that never connected, carrying a fraction of the current; each
+/// generation carries less. 0.35 for the first, × 0.5 per further generation.
+double branch_brightness(int generation);
 
 /// Strike times: optional forced first_strike_s (strike 0) and a Poisson process of rate
 /// strikes_per_minute from t = 0 (strikes 1, 2, …). Lazily extended, deterministic in seed.

@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <numbers>
+#include <utility>
 
 namespace raintrace::sim {
 namespace {
@@ -91,7 +93,8 @@ TEST(Lightning, FlashHasOnePeakPerReturnStroke) {
   for (double t = 1e-4; t <= 0.4; t += 1e-4) {
     const double b = flash_envelope(p, t, 1, 0);
     EXPECT_GE(b, 0.0);
-    EXPECT_LE(b, 1.0);
+    // Strokes add; each has decayed below e^−3 when the next starts: 1 + e^−3 + e^−6 + … .
+    EXPECT_LE(b, 1.0 / (1.0 - std::exp(-3.0)));
     if (b > previous + 1e-9) ++rises;
     previous = b;
   }
@@ -123,6 +126,128 @@ TEST(Lightning, ForcedFirstStrike) {
   ASSERT_EQ(s.size(), 1u);
   EXPECT_EQ(s[0].id, 0u);
   EXPECT_DOUBLE_EQ(s[0].time_s, 0.5);
+}
+
+TEST(Lightning, BranchesAreFainterThanTheTrunkAndEachGenerationFainterStill) {
+  EXPECT_EQ(branch_brightness(0), 1.0);
+  EXPECT_DOUBLE_EQ(branch_brightness(1), 0.35);
+  for (int g = 1; g < 8; ++g)
+    EXPECT_DOUBLE_EQ(branch_brightness(g + 1), 0.5 * branch_brightness(g));
+}
+
+// One stroke (return_strokes = 1): b(t) = e^(−t/τ) on [0, D], τ = D/4. Its averages over a
+// shutter have closed forms to test against.
+TEST(Lightning, ExposureOfOneStrokeMatchesTheAnalyticIntegral) {
+  LightningParams p;
+  p.return_strokes = 1;
+  p.flash_duration_s = 0.4;
+  const double tau = 0.1;
+  for (const double t : {0.001, 0.02, 1.0 / 48.0, 0.1}) {
+    // Shutter opening at the strike: (1/T) ∫₀ᵀ e^(−t/τ) dt = τ/T · (1 − e^(−T/τ)).
+    EXPECT_NEAR(flash_exposure(p, 0.0, t, 1, 0).all_strokes, tau / t * (1.0 - std::exp(-t / tau)),
+                1e-12)
+        << "T = " << t;
+    // Opening before the strike: the dark part of the exposure counts too.
+    EXPECT_NEAR(flash_exposure(p, -t / 2, t, 1, 0).all_strokes,
+                tau / t * (1.0 - std::exp(-t / 2 / tau)), 1e-12);
+    // Straddling the end of the flash: only up to D = 0.4 s.
+    EXPECT_NEAR(flash_exposure(p, 0.4 - t / 2, t, 1, 0).all_strokes,
+                tau / t * (std::exp(-(0.4 - t / 2) / tau) - std::exp(-4.0)), 1e-12);
+  }
+  EXPECT_EQ(flash_exposure(p, 0.5, 0.02, 1, 0).all_strokes, 0.0);
+  EXPECT_EQ(flash_exposure(p, -0.05, 0.02, 1, 0).all_strokes, 0.0);
+}
+
+// Several strokes: the average equals a fine numerical integral of flash_envelope over the
+// shutter, wherever the shutter falls (across stroke starts and the end of the flash). Midpoint
+// rule with n steps: the envelope jumps by at most ~1 at a stroke's start, which costs at most
+// 1/n of the average; smooth parts are far more accurate.
+TEST(Lightning, ExposureIsTheEnvelopeAveragedOverTheShutter) {
+  LightningParams p;
+  p.return_strokes = 4;
+  p.flash_duration_s = 0.35;
+  const int n = 200000;
+  for (const double exposure : {1.0 / 48.0, 0.05}) {
+    for (double open = -0.03; open < 0.37; open += 0.0173) {
+      double sum = 0.0;
+      for (int k = 0; k < n; ++k) {
+        sum += flash_envelope(p, open + (k + 0.5) * exposure / n, 7, 2);
+      }
+      EXPECT_NEAR(flash_exposure(p, open, exposure, 7, 2).all_strokes, sum / n, 2.0 / n)
+          << "shutter opens " << open << " s after the strike, exposure " << exposure << " s";
+    }
+  }
+  // A zero exposure records the envelope itself.
+  for (double t = 0.0; t < 0.36; t += 0.01) {
+    EXPECT_EQ(flash_exposure(p, t, 0.0, 7, 2).all_strokes, flash_envelope(p, t, 7, 2));
+  }
+}
+
+// Later strokes retrace the main channel only: the branches' light is the first stroke's.
+TEST(Lightning, LaterStrokesDoNotLightTheBranches) {
+  LightningParams p;
+  p.return_strokes = 3;
+  p.flash_duration_s = 0.3;
+  const FlashExposure early = flash_exposure(p, 0.0, 0.01, 3, 1);
+  EXPECT_DOUBLE_EQ(early.first_stroke, early.all_strokes);  // before the second stroke
+  // After the second stroke starts (slot 0.1 s ± 0.0125 s) the channel outshines the branches.
+  const FlashExposure later = flash_exposure(p, 0.115, 0.01, 3, 1);
+  EXPECT_GT(later.all_strokes, 5.0 * later.first_stroke);
+}
+
+// Bearing of where a bolt reaches the ground, seen from the camera, in degrees from the view
+// direction (positive to the right), and its horizontal distance.
+std::pair<double, double> landing(const BoltSkeleton& bolt, const Camera& camera) {
+  const glm::dvec3 end(bolt.branches.front().segments.back().end);
+  const glm::dvec3 to = end - camera.position;
+  const glm::dvec3 fwd = camera.look_at - camera.position;
+  const double bearing =
+      (std::atan2(to.x, to.z) - std::atan2(fwd.x, fwd.z)) * 180.0 / std::numbers::pi;
+  return {std::remainder(bearing, 360.0), std::hypot(to.x, to.z)};
+}
+
+TEST(Lightning, FirstStrikeLandsInViewByDefault) {
+  LightningParams p;
+  Camera camera;  // 60° horizontal field of view
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    p.first_strike_s = 0.5;
+    const auto [forced, d0] = landing(build_bolt(p, camera, 0.0, seed, 0), camera);
+    p.first_strike_s = -1.0;  // no forced strike: the first random one opens the clip
+    const auto [random, d1] = landing(build_bolt(p, camera, 0.0, seed, 1), camera);
+    // The trunk steers for its landing point, jittered: within 2 % of the distance.
+    EXPECT_LT(std::abs(forced), 0.02 * 180.0 / std::numbers::pi);
+    EXPECT_LT(std::abs(random), 0.02 * 180.0 / std::numbers::pi);
+    EXPECT_NEAR(d0, p.distance_m, 0.02 * p.distance_m);
+    EXPECT_NEAR(d1, p.distance_m, 0.02 * p.distance_m);
+  }
+}
+
+TEST(Lightning, PlacementKeysSteerTheFirstStrikeAndSpreadTheOthers) {
+  LightningParams p;
+  p.first_strike_s = 0.0;
+  p.azimuth_deg = -40.0;
+  p.azimuth_spread_deg = 10.0;
+  p.distance_m = 900.0;
+  p.distance_min_m = 200.0;
+  p.distance_max_m = 300.0;
+  Camera camera;
+  camera.look_at = camera.position + glm::dvec3{1.0, 0.0, 1.0};  // looking 45° to the right
+  const auto [bearing, distance] = landing(build_bolt(p, camera, 0.0, 4, 0), camera);
+  EXPECT_NEAR(bearing, -40.0, 0.02 * 180.0 / std::numbers::pi);
+  EXPECT_NEAR(distance, 900.0, 18.0);
+  double lowest = 180.0, highest = -180.0;
+  for (std::uint64_t strike = 1; strike <= 200; ++strike) {
+    const auto [b, d] = landing(build_bolt(p, camera, 0.0, 4, strike), camera);
+    EXPECT_GE(d, 200.0 - 6.0);
+    EXPECT_LE(d, 300.0 + 6.0);
+    lowest = std::min(lowest, b);
+    highest = std::max(highest, b);
+  }
+  // 200 uniform draws in [−50°, −30°] come within 1° of both ends (chance to miss one: 0.95²⁰⁰).
+  EXPECT_GT(lowest, -50.0 - 2.0);
+  EXPECT_LT(lowest, -49.0);
+  EXPECT_LT(highest, -30.0 + 2.0);
+  EXPECT_GT(highest, -31.0);
 }
 
 }  // namespace

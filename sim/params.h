@@ -177,7 +177,14 @@ struct LightningParams {
   int generations = 5;
   /// Height of the cloud base where bolts start.
   double cloud_height_m = 300.0;
-  /// Horizontal distance of strikes from the camera: [min, max].
+  /// Where strikes land, as seen from the camera: degrees from its horizontal view direction,
+  /// positive to the right. The clip's first strike lands exactly there.
+  double azimuth_deg = 0.0;
+  /// Later strikes land within ± this of azimuth_deg (uniformly).
+  double azimuth_spread_deg = 25.0;
+  /// Horizontal distance of the clip's first strike from the camera.
+  double distance_m = 400.0;
+  /// Horizontal distance of later strikes from the camera: [min, max].
   double distance_min_m = 80.0;
   double distance_max_m = 400.0;
   /// Radius of the trunk.
@@ -199,8 +206,13 @@ inline constexpr Param<LightningParams> kLightningParams[] = {
     integer("lightning", "generations", &LightningParams::generations, "", 1, 8),
     number("lightning", "cloud_height_m", &LightningParams::cloud_height_m, "m",
            Range::closed(10, 5000)),
+    number("lightning", "azimuth_deg", &LightningParams::azimuth_deg, "°",
+           Range::closed(-180, 180)),
+    number("lightning", "azimuth_spread_deg", &LightningParams::azimuth_spread_deg, "°",
+           Range::closed(0, 180)),
     // Beyond 10 km a bolt from a cloud base of at most 5 km is a few pixels tall and its
     // flash, as the environments light it, no longer reaches the street.
+    number("lightning", "distance_m", &LightningParams::distance_m, "m", Range::closed(0, 10000)),
     number("lightning", "distance_min_m", &LightningParams::distance_min_m, "m",
            Range::closed(0, 10000))
         .at_most("distance_max_m"),

@@ -429,14 +429,19 @@ Frame World::snapshot(int frame_index) const {
     f.drops.colour.push_back(d.colour[i]);
   }
   add_ground_effects(f);
+  // A frame records the light of its exposure: the shutter is open from time_s for
+  // camera.exposure_s (the window the streaks span), and a flash counts by its average over it.
   float flash = 0.0f;
+  const double exposure = m_params.camera.exposure_s;
   for (const auto& strike : m_strikes) {
     const double since = f.time_s - strike.time_s;
-    if (since < 0.0 || since > m_params.lightning.flash_duration_s) continue;
+    if (since + exposure < 0.0 || since > m_params.lightning.flash_duration_s) continue;
+    const FlashExposure light =
+        flash_exposure(m_params.lightning, since, exposure, m_params.seed, strike.id);
     Bolt bolt;
     bolt.id = strike.id;
-    bolt.brightness =
-        static_cast<float>(flash_envelope(m_params.lightning, since, m_params.seed, strike.id));
+    bolt.brightness = static_cast<float>(light.all_strokes);
+    bolt.branch_brightness = static_cast<float>(light.first_stroke);
     const BoltSkeleton skeleton = build_bolt(m_params.lightning, m_params.camera,
                                              m_params.ground_y_m, m_params.seed, strike.id);
     for (const BoltBranch& branch : skeleton.branches) {

@@ -400,7 +400,15 @@ TEST(World, LightningShowsBoltsAndFlash) {
   const Frame f = world.snapshot(2);
   ASSERT_EQ(f.bolts.size(), 1u);
   EXPECT_EQ(f.lightning_strikes, 1u);
-  EXPECT_FLOAT_EQ(f.flash, 1.0f);  // the first return stroke peaks at the strike
+  // The shutter opens at the strike: the frame records the first stroke's decay averaged over
+  // the exposure, τ/T·(1 − e^(−T/τ)) with τ = duration / (4·strokes) (later strokes start after
+  // the exposure has closed).
+  const double tau = p.lightning.flash_duration_s / (4.0 * p.lightning.return_strokes);
+  const double exposure = p.camera.exposure_s;
+  ASSERT_GT(exposure, 0.0);
+  EXPECT_NEAR(f.flash, tau / exposure * (1.0 - std::exp(-exposure / tau)), 1e-6);
+  EXPECT_FLOAT_EQ(f.bolts[0].brightness, f.flash);
+  EXPECT_FLOAT_EQ(f.bolts[0].branch_brightness, f.flash);  // only the first stroke so far
   EXPECT_GT(f.bolts[0].segments.size(), 10u);
   world.advance_to(0.1 + p.lightning.flash_duration_s + 0.01);
   EXPECT_TRUE(world.snapshot(3).bolts.empty());

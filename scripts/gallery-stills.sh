@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Renders the stills of docs/gallery.md: one frame of each example at 640×360 with
+# `raintrace render` (developed as every rendered frame is), saved as a JPEG small enough for the
+# repository (quality 85, ~30–120 KB each).
+# Usage: scripts/gallery-stills.sh [RAINTRACE] [OUT_DIR] [EXAMPLE…]
+#   RAINTRACE  the raintrace binary (default build/cli/raintrace)
+#   OUT_DIR    where the JPEGs go (default docs/images/gallery)
+#   EXAMPLE…   names in examples/ (default: all)
+# Scratch render folders go to ${TMPDIR:-/tmp}/raintrace-gallery and are kept for a re-run.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+raintrace=${1:-$root/build/cli/raintrace}
+out=${2:-$root/docs/images/gallery}
+shift $(( $# > 2 ? 2 : $# ))
+examples=("$@")
+if (( ${#examples[@]} == 0 )); then
+  examples=(default night_street thunderstorm no_fog little_fog heavy_fog closeup streaks
+            light_rain heavy_rain)
+fi
+scratch=${TMPDIR:-/tmp}/raintrace-gallery
+mkdir -p "$out" "$scratch"
+
+# The frame each still shows: frame 16 (two thirds of a second in, the rain well developed),
+# but the thunderstorm's first return stroke, whose channel is in view (first_strike_s = 0.5 s
+# at 24 fps), and the closeup's first frame (its drops are beaded, the frames differ only by
+# the far rain).
+frame_of() {
+  case $1 in
+    thunderstorm) echo 13 ;;
+    closeup) echo 1 ;;
+    *) echo 16 ;;
+  esac
+}
+
+for name in "${examples[@]}"; do
+  frame=$(frame_of "$name")
+  folder=$scratch/$name
+  echo "== $name: frame $frame"
+  "$raintrace" render "$root/examples/$name.toml" -o "$folder" --frames "$frame" \
+    --width 640 --height 360 --no-movie --force
+  image=$(printf '%s/images/frame_%04d.png' "$folder" "$frame")
+  oiiotool "$image" --compression jpeg:85 -o "$out/$name.jpg"
+  echo "   $out/$name.jpg: $(( $(stat -c %s "$out/$name.jpg") / 1024 )) KB"
+done
