@@ -88,7 +88,7 @@ TEST(SceneFiles, ApertureFocusesOnLookAtAndReplacesAntialiasing) {
   // POV-Ray's aperture value is twice the lens opening it blurs as (see focal_blur_text).
   EXPECT_TRUE(contains(inc, " aperture 0.008 blur_samples 16,128 focal_point <0,0.5,2> "));
   // Focal blur samples each pixel many times: no antialiasing on top.
-  EXPECT_TRUE(contains(ini_text(look, 1, "frame", "scene.pov"), "\nAntialias=off\n"));
+  EXPECT_TRUE(contains(ini_text(look, 1, "frame", "scene.pov", {1, 1}), "\nAntialias=off\n"));
   look.quality = Quality::preview;
   EXPECT_TRUE(contains(scene_inc_text(look), " blur_samples 4,16 "));
   look.aperture_m = std::numeric_limits<double>::quiet_NaN();
