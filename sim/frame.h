@@ -32,6 +32,9 @@ struct Ripple {
   float amplitude_m = 0.0f;     ///< height of the first crest as it leaves the crater
   float start_radius_m = 0.0f;  ///< where the ring starts, about a drop diameter out
   bool on_puddle = true;        ///< rings on a puddle; false: the thin film's brief ones
+
+  // Compared member by member: the struct has padding after on_puddle, which memcmp would read.
+  bool operator==(const Ripple&) const = default;
 };
 
 struct BoltSegment {
