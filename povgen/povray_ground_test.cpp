@@ -1,10 +1,12 @@
 // The wet ground rendered by the real POV-Ray (ctest label `povray`; skipped without povray):
-// ripples appear in the picture where their impacts were simulated and spread with time, and
-// splashes carry on past the simulated volume of drops without an edge.
+// ripples appear in the picture where their impacts were simulated and spread with time, the
+// rain's unresolved roughness does not alias into glints without antialiasing, and splashes
+// carry on past the simulated volume of drops without an edge.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -43,13 +45,26 @@ sky_sphere { pigment { gradient y triangle_wave color_map { [0 rgb 0.02] [1 rgb 
 light_source { <0, 50, 0> color rgb 0.2 }
 )";
 
-/// A folder whose environment is kWetPlane, with frames 1..n from `frames`.
+/// The same wet plane under a sky whose brightness grows in proportion to the height of the
+/// direction (0 at the horizon, 10 overhead): what a tilted patch of water mirrors changes
+/// linearly with its tilt, so the picture's departure from calm water maps the water's slopes.
+constexpr const char* kWetPlaneLinearSky = R"(
+#declare Dry = texture { pigment { rgb 0.02 } finish { ambient 0 diffuse 0.2 } }
+plane { y, 0
+  texture { RT_WetGround(Dry) }
+  interior { ior 1.33 }
+}
+sky_sphere { pigment { gradient y color_map { [0 rgb 0] [1 rgb 10] } } }
+)";
+
+/// A folder whose environment is `environment` (kWetPlane unless given), with frames 1..n from
+/// `frames`.
 fs::path wet_folder(const std::string& name, const ExportParams& base,
-                    const std::vector<sim::Frame>& frames) {
+                    const std::vector<sim::Frame>& frames, const char* environment = kWetPlane) {
   const fs::path dir = testing::scratch_folder("povray_ground_" + name);
   fs::remove_all(dir);
   fs::create_directories(dir);
-  std::ofstream(dir / "wet.inc") << kWetPlane;
+  std::ofstream(dir / "wet.inc") << environment;
   ExportParams look = base;
   look.environment.include_path = "wet.inc";
   const std::string shared = write_shared_files(dir, look, static_cast<int>(frames.size()), dir,
@@ -145,6 +160,87 @@ TEST(PovRayGround, RipplesAppearWhereTheirImpactsWereAndSpreadWithTime) {
   // quarter wavelength: the crests' reflections move in steps as they pass the sky's bands).
   EXPECT_NEAR(radius2 - radius1, sim::ripple_speed() * 0.1, 0.0045);
   fs::remove_all(dir);
+}
+
+TEST(PovRayGround, UnresolvedRoughnessDoesNotAliasIntoGlints) {
+  SKIP_WITHOUT_POVRAY();
+  // Puddles 4–12 m ahead of a camera 1.6 m up, at 640×360: a pixel spans 7–22 mm of ground
+  // there, no finer than the rings' 17 mm wavelength, so the rain's roughness is drawn by the
+  // noise. The same frame of calm water (no rain) is the reference; the difference maps what
+  // the roughness does to the reflection. One sample a pixel (-A), as at quality preview: the
+  // noise as drawn must be resolved — neighbouring pixels tilted alike — where the true scale
+  // (RT_NoiseSpans = 0) decorrelates them into a salt of glints; and it must still disturb
+  // the mirror.
+  ExportParams look;
+  look.width = 640;
+  look.height = 360;
+  look.camera.position = {0.0, 1.6, -4.0};
+  look.camera.look_at = {0.0, 0.0, 6.0};
+  look.camera.fov_deg = 40.0;
+  look.ground.puddles.coverage = 0.9;
+  look.ground.puddles.size_m = 20.0;
+  look.rain_medium = false;  // the rain's roughness alone makes the difference
+  const sim::PuddleField field(look.ground.puddles, look.ground.puddles.seed);
+  std::vector<sim::Frame> frames(1);
+  frames[0].index = 1;
+  frames[0].time_s = 0.5;
+  ExportParams calm = look;
+  calm.rain.rate_mm_per_h = 0.0;
+  look.rain.rate_mm_per_h = 20.0;
+  const fs::path calm_dir = wet_folder("calm", calm, frames, kWetPlaneLinearSky);
+  const fs::path rain_dir = wet_folder("rough", look, frames, kWetPlaneLinearSky);
+  ASSERT_EQ(run_povray(calm_dir, "scene.ini +SF1 +EF1 -A"), 0) << log_of(calm_dir);
+  ASSERT_EQ(run_povray(rain_dir, "scene.ini +SF1 +EF1 -A Declare=RT_Preview=1 +Oimages/drawn"), 0)
+      << log_of(rain_dir);
+  ASSERT_EQ(run_povray(rain_dir,
+                       "scene.ini +SF1 +EF1 -A Declare=RT_Preview=1 "
+                       "Declare=RT_NoiseSpans=0 +Oimages/true_scale"),
+            0)
+      << log_of(rain_dir);
+  const auto reference = read_rgb(calm_dir / "images" / "frame_0001.exr");
+  const auto drawn = read_rgb(rain_dir / "images" / "drawn0001.exr");
+  const auto true_scale = read_rgb(rain_dir / "images" / "true_scale0001.exr");
+  ASSERT_FALSE(reference.empty());
+  ASSERT_EQ(drawn.size(), reference.size());
+  ASSERT_EQ(true_scale.size(), reference.size());
+  // Pixels deep inside a puddle (their right and lower neighbours too) seeing 4–12 m ahead.
+  const GroundPixels pixels(look.camera, look.width, look.height, 0.0);
+  auto usable = [&](std::size_t p) {
+    return pixels.hits(p) && pixels.z(p) > 0.0 && pixels.z(p) < 8.0 &&
+           field.value(pixels.x(p), pixels.z(p)) > field.threshold() + 0.3;
+  };
+  // Rms departure from calm water, and its correlation between neighbouring pixels.
+  auto measure = [&](const std::vector<float>& image, double& rms, double& correlation) {
+    double sum_sq = 0.0, sum_next = 0.0;
+    int count = 0;
+    for (int j = 0; j + 1 < look.height; ++j) {
+      for (int i = 0; i + 1 < look.width; ++i) {
+        const std::size_t p = static_cast<std::size_t>(j) * look.width + i;
+        const std::size_t right = p + 1, below = p + look.width;
+        if (!usable(p) || !usable(right) || !usable(below)) continue;
+        const double d = image[3 * p] - reference[3 * p];
+        sum_sq += d * d;
+        sum_next +=
+            d * 0.5 *
+            ((image[3 * right] - reference[3 * right]) + (image[3 * below] - reference[3 * below]));
+        ++count;
+      }
+    }
+    ASSERT_GT(count, 5000) << "too few puddle pixels";
+    ASSERT_GT(sum_sq, 0.0) << "the rain's roughness changed nothing";
+    rms = std::sqrt(sum_sq / count);
+    correlation = sum_next / sum_sq;
+  };
+  double rms_drawn = 0.0, corr_drawn = 0.0, rms_true = 0.0, corr_true = 0.0;
+  measure(drawn, rms_drawn, corr_drawn);
+  measure(true_scale, rms_true, corr_true);
+  std::printf("as drawn: rms %.4f, correlation %.3f; true scale: rms %.4f, correlation %.3f\n",
+              rms_drawn, corr_drawn, rms_true, corr_true);
+  EXPECT_GT(corr_drawn, 0.4) << "as drawn: neighbours tilted independently (salt)";
+  EXPECT_LT(corr_true, 0.2) << "true scale: the noise is no longer finer than a pixel";
+  EXPECT_GT(rms_drawn, 0.1 * rms_true) << "as drawn: the roughness no longer shows";
+  fs::remove_all(calm_dir);
+  fs::remove_all(rain_dir);
 }
 
 TEST(PovRayGround, SplashesGoOnPastTheSimulatedVolumeWithoutAnEdge) {
