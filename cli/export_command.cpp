@@ -78,7 +78,8 @@ Command register_export_command(CLI::App& app) {
   sub->footer(
       "Example:\n"
       "  raintrace export examples/night_street.toml -o out/night --frames 1-12\n"
-      "  cd out/night && povray scene.ini        # plain POV-Ray renders images/frame_NNNN.png\n"
+      "  cd out/night && povray scene.ini        # plain POV-Ray renders images/frame_NNNN.exr\n"
+      "  raintrace render out/night              # develops them into images/frame_NNNN.png\n"
       "\n"
       "OUT must be new, empty, or a folder raintrace made from the same scene and settings\n"
       "(seed, size, quality, masks); --force replaces what another scene left there.\n"
