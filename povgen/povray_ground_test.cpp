@@ -1,7 +1,8 @@
 // The wet ground rendered by the real POV-Ray (ctest label `povray`; skipped without povray):
 // ripples appear in the picture where their impacts were simulated and spread with time, the
-// rain's unresolved roughness does not alias into glints without antialiasing, and splashes
-// carry on past the simulated volume of drops without an edge.
+// rain's unresolved roughness does not alias into glints without antialiasing, a puddle shows
+// the ground beneath it, and splashes carry on past the simulated volume of drops without an
+// edge.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -55,6 +56,22 @@ plane { y, 0
   interior { ior 1.33 }
 }
 sky_sphere { pigment { gradient y color_map { [0 rgb 0] [1 rgb 10] } } }
+)";
+
+/// Calm puddles on a plain ground that is their bed too, under a black sky, lit by a distant
+/// light behind and above the camera (its mirror highlight points away): all the light that
+/// comes back is diffuse, from the ground or from the bed through the water's surface.
+/// Declare=NoBed=1 leaves RT_PuddleBed undeclared.
+constexpr const char* kPlainGroundUnderWater = R"(
+#declare Ground = pigment { rgb 0.05 }
+#ifndef (NoBed) #declare RT_PuddleBed = pigment { Ground } #end
+#declare Dry = texture { pigment { Ground } finish { ambient 0 diffuse 0.55 } }
+plane { y, 0
+  texture { RT_WetGround(Dry) }
+  interior { ior 1.33 }
+}
+sky_sphere { pigment { rgb 0 } }
+light_source { <0, 9000, -5000> color rgb 1 parallel point_at 0 }
 )";
 
 /// A folder whose environment is `environment` (kWetPlane unless given), with frames 1..n from
@@ -241,6 +258,72 @@ TEST(PovRayGround, UnresolvedRoughnessDoesNotAliasIntoGlints) {
   EXPECT_GT(rms_drawn, 0.1 * rms_true) << "as drawn: the roughness no longer shows";
   fs::remove_all(calm_dir);
   fs::remove_all(rain_dir);
+}
+
+// Standing water a few millimetres deep absorbs next to nothing and lies on ground as wet as the
+// film around it: seen through its surface, a puddle is that ground (plus what it mirrors —
+// here a black sky). Painted near black, as before, puddles read as holes cut in the street.
+// (POV-Ray does not take the Fresnel share a surface reflects from its diffuse light —
+// conserve_energy acts on transparency only — so the ground beside the puddles and the bed
+// through the water match, as the wet road's own finish does.)
+TEST(PovRayGround, PuddleShowsTheGroundBeneathItsSurface) {
+  SKIP_WITHOUT_POVRAY();
+  ExportParams look;
+  look.width = 320;
+  look.height = 180;
+  look.camera.position = {0.0, 1.6, -4.0};
+  look.camera.look_at = {0.0, 0.0, 6.0};
+  look.camera.fov_deg = 40.0;
+  look.ground.puddles.coverage = 0.5;
+  look.ground.puddles.size_m = 1.0;
+  look.rain.rate_mm_per_h = 0.0;  // calm water: no rings, no roughness
+  look.rain_medium = false;
+  const sim::PuddleField field(look.ground.puddles, look.ground.puddles.seed);
+  std::vector<sim::Frame> frames(1);
+  frames[0].index = 1;
+  const fs::path with_bed = wet_folder("bed", look, frames, kPlainGroundUnderWater);
+  ASSERT_EQ(run_povray(with_bed, "scene.ini +SF1 +EF1 -A"), 0) << log_of(with_bed);
+  // The same ground with no bed declared: the near-black default shows through.
+  ASSERT_EQ(run_povray(with_bed, "scene.ini +SF1 +EF1 -A Declare=NoBed=1 +Oimages/no_bed"), 0)
+      << log_of(with_bed);
+  const auto image = read_rgb(with_bed / "images" / "frame_0001.exr");
+  const auto black_bed = read_rgb(with_bed / "images" / "no_bed0001.exr");
+  ASSERT_EQ(image.size(), static_cast<std::size_t>(3 * look.width * look.height));
+  ASSERT_EQ(black_bed.size(), image.size());
+
+  // Per row (one view angle), the mean of pixels well inside puddles against the mean of pixels
+  // well outside them.
+  const GroundPixels pixels(look.camera, look.width, look.height, 0.0);
+  double ratio_sum = 0.0, black_ratio_sum = 0.0;
+  int rows = 0;
+  for (int j = 0; j < look.height; ++j) {
+    double water = 0.0, water_black = 0.0, ground = 0.0;
+    int n_water = 0, n_ground = 0;
+    for (int i = 0; i < look.width; ++i) {
+      const std::size_t p = static_cast<std::size_t>(j) * look.width + i;
+      if (!pixels.hits(p) || pixels.z(p) > 30.0) continue;
+      const double f = field.value(pixels.x(p), pixels.z(p)) - field.threshold();
+      if (f > 0.3) {
+        water += image[3 * p + 1];
+        water_black += black_bed[3 * p + 1];
+        ++n_water;
+      } else if (f < -0.3) {
+        ground += image[3 * p + 1];
+        ++n_ground;
+      }
+    }
+    if (n_water < 5 || n_ground < 5) continue;
+    ratio_sum += (water / n_water) / (ground / n_ground);
+    black_ratio_sum += (water_black / n_water) / (ground / n_ground);
+    ++rows;
+  }
+  ASSERT_GT(rows, 40) << "too few rows with both puddle and dry ground";
+  const double ratio = ratio_sum / rows, black_ratio = black_ratio_sum / rows;
+  std::printf("puddle / ground: %.3f over %d rows; near-black bed: %.3f\n", ratio,
+              rows, black_ratio);
+  EXPECT_NEAR(ratio, 1.0, 0.05) << "the bed does not show through the water as it should";
+  EXPECT_LT(black_ratio, 0.3) << "without RT_PuddleBed the puddles are no longer dark";
+  fs::remove_all(with_bed);
 }
 
 TEST(PovRayGround, SplashesGoOnPastTheSimulatedVolumeWithoutAnEdge) {
