@@ -319,8 +319,8 @@ TEST(PovRayGround, PuddleShowsTheGroundBeneathItsSurface) {
   }
   ASSERT_GT(rows, 40) << "too few rows with both puddle and dry ground";
   const double ratio = ratio_sum / rows, black_ratio = black_ratio_sum / rows;
-  std::printf("puddle / ground: %.3f over %d rows; near-black bed: %.3f\n", ratio,
-              rows, black_ratio);
+  std::printf("puddle / ground: %.3f over %d rows; near-black bed: %.3f\n", ratio, rows,
+              black_ratio);
   EXPECT_NEAR(ratio, 1.0, 0.05) << "the bed does not show through the water as it should";
   EXPECT_LT(black_ratio, 0.3) << "without RT_PuddleBed the puddles are no longer dark";
   fs::remove_all(with_bed);
