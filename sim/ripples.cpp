@@ -84,10 +84,15 @@ RippleSample ripple_at(const Ripple& ripple, double x, double z, const PixelSpan
   if (!(ripple.lifetime_s > 0.0f)) return s;
   const double t = ripple.age_s;
   const double front = ripple.start_radius_m + ripple_speed() * t;
-  const double fade = 1.0 - t / ripple.lifetime_s;
-  const double k = 2.0 * kPi / ripple_wavelength();
   const double dx = x - ripple.x, dz = z - ripple.z;
   const double r = std::sqrt(dx * dx + dz * dz);
+  const double w = kPacketWidth * ripple_wavelength();
+  const double xi = r - front;
+  // Outside the packet first: most points a ring's bounding box asks about are (povgen draws
+  // every pixel of it), and the exponentials below are most of the cost.
+  if (std::abs(xi) > 3.0 * w) return s;
+  const double fade = 1.0 - t / ripple.lifetime_s;
+  const double k = 2.0 * kPi / ripple_wavelength();
   // cos θ between the radius (the wave's direction here) and the line of sight.
   const double cos_t = r > 1e-9 ? (dx * span.dir_x + dz * span.dir_z) / r : 1.0;
   const double sigma2 = kPixelSigma * kPixelSigma *
@@ -95,9 +100,7 @@ RippleSample ripple_at(const Ripple& ripple, double x, double z, const PixelSpan
                          span.across_m * span.across_m * (1.0 - cos_t * cos_t));
   const double amplitude = ripple.amplitude_m * std::sqrt(ripple.start_radius_m / front) * fade *
                            fade * std::exp(-0.5 * k * k * sigma2);
-  const double w = kPacketWidth * ripple_wavelength();
-  const double xi = r - front;
-  if (std::abs(xi) > 3.0 * w || amplitude == 0.0) return s;
+  if (amplitude == 0.0) return s;
   const double envelope = std::exp(-0.5 * xi * xi / (w * w));
   const double c = std::cos(k * xi), sn = std::sin(k * xi);
   s.height = amplitude * envelope * c;
