@@ -79,38 +79,61 @@ double ripple_reach(const Ripple& ripple) {
   return front + 3.0 * kPacketWidth * ripple_wavelength();
 }
 
-RippleSample ripple_at(const Ripple& ripple, double x, double z, const PixelSpan& span) {
-  RippleSample s;
-  if (!(ripple.lifetime_s > 0.0f)) return s;
+RippleRing::RippleRing(const Ripple& ripple) : m_x(ripple.x), m_z(ripple.z) {
+  if (!(ripple.lifetime_s > 0.0f)) return;
   const double t = ripple.age_s;
-  const double front = ripple.start_radius_m + ripple_speed() * t;
-  const double dx = x - ripple.x, dz = z - ripple.z;
-  const double r = std::sqrt(dx * dx + dz * dz);
-  const double w = kPacketWidth * ripple_wavelength();
-  const double xi = r - front;
-  // Outside the packet first: most points a ring's bounding box asks about are (povgen draws
-  // every pixel of it), and the exponentials below are most of the cost.
-  if (std::abs(xi) > 3.0 * w) return s;
+  m_front = ripple.start_radius_m + ripple_speed() * t;
   const double fade = 1.0 - t / ripple.lifetime_s;
+  m_amplitude = ripple.amplitude_m * std::sqrt(ripple.start_radius_m / m_front) * fade * fade;
+}
+
+bool RippleRing::point(double x, double z, const PixelSpan& span, Point& p) const {
+  if (m_amplitude == 0.0) return false;
+  p.dx = x - m_x;
+  p.dz = z - m_z;
+  p.r = std::sqrt(p.dx * p.dx + p.dz * p.dz);
+  p.xi = p.r - m_front;
+  const double w = kPacketWidth * ripple_wavelength();
+  // Outside the packet first: most points a ring's bounding box asks about are (povgen draws
+  // every pixel of it), and the exponential below is most of the cost.
+  if (std::abs(p.xi) > 3.0 * w) return false;
   const double k = 2.0 * kPi / ripple_wavelength();
   // cos θ between the radius (the wave's direction here) and the line of sight.
-  const double cos_t = r > 1e-9 ? (dx * span.dir_x + dz * span.dir_z) / r : 1.0;
+  const double cos_t = p.r > 1e-9 ? (p.dx * span.dir_x + p.dz * span.dir_z) / p.r : 1.0;
   const double sigma2 = kPixelSigma * kPixelSigma *
                         (span.along_m * span.along_m * cos_t * cos_t +
                          span.across_m * span.across_m * (1.0 - cos_t * cos_t));
-  const double amplitude = ripple.amplitude_m * std::sqrt(ripple.start_radius_m / front) * fade *
-                           fade * std::exp(-0.5 * k * k * sigma2);
-  if (amplitude == 0.0) return s;
-  const double envelope = std::exp(-0.5 * xi * xi / (w * w));
-  const double c = std::cos(k * xi), sn = std::sin(k * xi);
-  s.height = amplitude * envelope * c;
+  // The pixel filter exp(−k²σ²/2) and the packet's envelope exp(−ξ²/(2w²)) in one exponential.
+  p.gain = m_amplitude * std::exp(-0.5 * (k * k * sigma2 + p.xi * p.xi / (w * w)));
+  return p.gain != 0.0;
+}
+
+double RippleRing::height_at(double x, double z, const PixelSpan& span) const {
+  Point p;
+  if (!point(x, z, span, p)) return 0.0;
+  const double k = 2.0 * kPi / ripple_wavelength();
+  return p.gain * std::cos(k * p.xi);
+}
+
+RippleSample RippleRing::sample_at(double x, double z, const PixelSpan& span) const {
+  RippleSample s;
+  Point p;
+  if (!point(x, z, span, p)) return s;
+  const double k = 2.0 * kPi / ripple_wavelength();
+  const double w = kPacketWidth * ripple_wavelength();
+  const double c = std::cos(k * p.xi), sn = std::sin(k * p.xi);
+  s.height = p.gain * c;
   // d/dr of envelope·cos(kξ) = envelope·(−ξ/w²·cos − k·sin).
-  const double dh_dr = amplitude * envelope * (-xi / (w * w) * c - k * sn);
-  if (r > 1e-9) {
-    s.slope_x = dh_dr * dx / r;
-    s.slope_z = dh_dr * dz / r;
+  const double dh_dr = p.gain * (-p.xi / (w * w) * c - k * sn);
+  if (p.r > 1e-9) {
+    s.slope_x = dh_dr * p.dx / p.r;
+    s.slope_z = dh_dr * p.dz / p.r;
   }
   return s;
+}
+
+RippleSample ripple_at(const Ripple& ripple, double x, double z, const PixelSpan& span) {
+  return RippleRing(ripple).sample_at(x, z, span);
 }
 
 }  // namespace raintrace::sim

@@ -58,6 +58,29 @@ struct RippleSample {
 };
 RippleSample ripple_at(const Ripple& ripple, double x, double z, const PixelSpan& span = {});
 
+/// One ripple at its age, with what all of its points share worked out once: a ring map asks
+/// for thousands of points of each ring, and ripple_at() would redo that for every one.
+class RippleRing {
+ public:
+  explicit RippleRing(const Ripple& ripple);
+  /// ripple_at(ripple, x, z, span).height.
+  [[nodiscard]] double height_at(double x, double z, const PixelSpan& span) const;
+  /// ripple_at(ripple, x, z, span).
+  [[nodiscard]] RippleSample sample_at(double x, double z, const PixelSpan& span) const;
+
+ private:
+  /// The wave at (x, z): ξ (m from the front), the packet's height scale there including the
+  /// pixel filter, and the offset from the centre. False outside the packet (flat there).
+  struct Point {
+    double xi = 0.0, gain = 0.0, dx = 0.0, dz = 0.0, r = 0.0;
+  };
+  bool point(double x, double z, const PixelSpan& span, Point& p) const;
+
+  float m_x = 0.0f, m_z = 0.0f;
+  double m_front = 0.0;      ///< radius of the packet's centre, m
+  double m_amplitude = 0.0;  ///< crest height before the pixel filter, m (0: flat)
+};
+
 /// Largest distance from its centre at which the ripple is not flat (m).
 double ripple_reach(const Ripple& ripple);
 
