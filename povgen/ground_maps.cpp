@@ -17,7 +17,8 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 std::uint16_t to_u16(double v) {
-  return static_cast<std::uint16_t>(std::lround(std::clamp(v, 0.0, 1.0) * 65535.0));
+  // Rounds to nearest: the value is not negative (std::lround costs a call a channel here).
+  return static_cast<std::uint16_t>(std::clamp(v, 0.0, 1.0) * 65535.0 + 0.5);
 }
 
 }  // namespace
@@ -143,7 +144,8 @@ bool stir_film(const GroundPixels& pixels, const sim::Ripple& ripple, RippleMap&
   for (int j = j0; j <= j1; ++j) {
     for (int i = i0; i <= i1; ++i) {
       const std::size_t p = static_cast<std::size_t>(j) * w + i;
-      if (pixels.hits(p) && std::hypot(pixels.x(p) - ripple.x, pixels.z(p) - ripple.z) <= radius) {
+      const double dx = pixels.x(p) - ripple.x, dz = pixels.z(p) - ripple.z;
+      if (pixels.hits(p) && dx * dx + dz * dz <= radius * radius) {
         add(p, stir);
       }
     }
@@ -183,6 +185,7 @@ void draw_ripples(const GroundPixels& pixels, const std::vector<float>& share,
       }
     }
     if (!in_front || c1 < 0.0 || r1 < 0.0 || c0 >= w || r0 >= h) continue;
+    const sim::RippleRing ring(ripple);
     const int i0 = std::max(0, static_cast<int>(std::floor(c0)));
     const int i1 = std::min(w - 1, static_cast<int>(std::ceil(c1)));
     const int j0 = std::max(0, static_cast<int>(std::floor(r0)));
@@ -191,9 +194,8 @@ void draw_ripples(const GroundPixels& pixels, const std::vector<float>& share,
       for (int i = i0; i <= i1; ++i) {
         const std::size_t p = static_cast<std::size_t>(j) * w + i;
         if (!pixels.hits(p)) continue;
-        const sim::RippleSample s =
-            sim::ripple_at(ripple, pixels.x(p), pixels.z(p), pixels.span(p));
-        map.height_m[p] += static_cast<float>(s.height);
+        map.height_m[p] +=
+            static_cast<float>(ring.height_at(pixels.x(p), pixels.z(p), pixels.span(p)));
       }
     }
   }
@@ -219,6 +221,11 @@ void write_png(const std::filesystem::path& path, int width, int height, int cha
   OIIO::ImageSpec spec(width, height, channels, type);
   // The channels are data, not colour with a premultiplied alpha: written as they are.
   spec.attribute("oiio:UnassociatedAlpha", 1);
+  // zlib's fastest level and no row filter: a frame's map is written once and read once, and
+  // libpng's default (level 6, each row's best of five filters) was a fifth of a frame's whole
+  // export. Measured on heavy_rain's map: 95 KB as before, 98 KB like this.
+  spec.attribute("png:compressionLevel", 1);
+  spec.attribute("png:filter", 8);  // PNG_FILTER_NONE
   if (!out->open(path.string(), spec) || !out->write_image(type, pixels) || !out->close()) {
     throw std::runtime_error("cannot write " + path.string() + ": " + out->geterror());
   }
