@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Renders the stills of docs/gallery.md: one frame of each example at 640×360 with
-# `raintrace render` (developed as every rendered frame is), saved as a JPEG small enough for the
-# repository (quality 85, ~30–120 KB each).
+# Renders the stills of docs/gallery.md: one frame of each example at 640×360 and final quality
+# with `raintrace render` (developed as every rendered frame is), saved as a JPEG small enough
+# for the repository (quality 85, ~30–120 KB each). Final quality whatever the example asks for:
+# a still is one frame, and the gallery shows what the renderer makes, antialiased, with its
+# windows' reflections (most examples preview for speed).
 # Usage: scripts/gallery-stills.sh [RAINTRACE] [OUT_DIR] [EXAMPLE…]
 #   RAINTRACE  the raintrace binary (default build/cli/raintrace)
 #   OUT_DIR    where the JPEGs go (default docs/images/gallery)
@@ -37,7 +39,7 @@ for name in "${examples[@]}"; do
   folder=$scratch/$name
   echo "== $name: frame $frame"
   "$raintrace" render "$root/examples/$name.toml" -o "$folder" --frames "$frame" \
-    --width 640 --height 360 --no-movie --force
+    --width 640 --height 360 --quality final --no-movie --force
   image=$(printf '%s/images/frame_%04d.png' "$folder" "$frame")
   oiiotool "$image" --compression jpeg:85 -o "$out/$name.jpg"
   echo "   $out/$name.jpg: $(( $(stat -c %s "$out/$name.jpg") / 1024 )) KB"
