@@ -55,13 +55,16 @@ std::string fog_text(const FogParams& fog, const sim::Camera& camera) {
 // at that plane, as a lens of diameter aperture/2 gives), hence 2·aperture_m. Samples per pixel
 // adapt between the two blur_samples numbers until the pixel's estimate is stable (confidence,
 // variance); POV-Ray places them by a fixed pattern, so pixels repeat across runs and thread
-// counts. Preview takes fewer: grainier discs, the same picture.
+// counts. Final quality stops at a variance of 1/8000 (up to 256 samples): at 1/2000 (up to
+// 128) the closeup's blurred street was salted with dark specks, a render's tell (mean
+// |pixel − its 5×5 mean| 5.9 % of the level, 3.3 % now, for 2.1× the frame's CPU; BENCHMARKS.md,
+// "Focal blur"). Preview takes fewer: grainier discs, the same picture.
 std::string focal_blur_text(const ExportParams& look) {
   if (!(look.aperture_m > 0.0)) return {};
   const bool preview = look.quality == Quality::preview;
   return " aperture " + format_number(2.0 * look.aperture_m) + " blur_samples " +
-         (preview ? "4,16" : "16,128") + " focal_point " + vec(look.camera.look_at) +
-         " confidence 0.95 variance 1/2000";
+         (preview ? "4,16" : "16,256") + " focal_point " + vec(look.camera.look_at) +
+         " confidence 0.95 variance " + (preview ? "1/2000" : "1/8000");
 }
 
 // The environment plate in scene.inc: decides per frame whether to draw it, then includes the
