@@ -311,26 +311,19 @@ void build_frame_values(const sim::Frame& frame, const ExportParams& look, Frame
   }
 
   // The wet ground: a frame that draws the environment plate shows the plate's puddles (no
-  // map); a traced one gets its map of rings and the ground's state.
+  // map); a traced one gets its map of rings and of the film's stir.
   values.ripples = RippleMap{};
   values.ground = ground_applies(look);
   values.time_s = frame.time_s;
   const bool traced =
       !environment_plate_applies(look) || values.flash > 0.0f || !values.bolts.empty();
   if (values.ground && traced) {
-    const sim::PuddleParams& puddles = look.ground.puddles;
-    const sim::PuddleParams& drawn = values.puddle_share_for;
     if (!values.ground_pixels.matches(look.camera, look.width, look.height,
-                                      look.ground.ground_y_m) ||
-        values.puddle_share.empty() || drawn.coverage != puddles.coverage ||
-        drawn.size_m != puddles.size_m || drawn.seed != puddles.seed) {
-      values.puddle_share_for = puddles;
+                                      look.ground.ground_y_m)) {
       values.ground_pixels =
           GroundPixels(look.camera, look.width, look.height, look.ground.ground_y_m);
-      values.puddle_share = puddle_mask(
-          values.ground_pixels, sim::PuddleField(look.ground.puddles, look.ground.puddles.seed));
     }
-    draw_ripples(values.ground_pixels, values.puddle_share, frame.ripples, values.ripples);
+    draw_ripples(values.ground_pixels, frame.ripples, values.ripples);
   }
 }
 

@@ -50,18 +50,15 @@ struct FrameValues {
   std::vector<SphereValue> drops;    ///< near drops (then near splash droplets)
   std::vector<StreakValue> streaks;  ///< far drops (then far splash droplets)
   std::vector<BoltValue> bolts;
-  /// The frame's rings and the ground's state as the camera sees them (empty without puddles,
+  /// The frame's rings and the film's stir as the camera sees them (empty without puddles,
   /// and in frames that draw the environment plate): written beside the frame as
   /// ripples/ripple_NNNN.png (ground_scene.h).
   RippleMap ripples;
   /// Wet ground drawn (ground_scene.h's ground_applies): the frame declares its time for it.
   bool ground = false;
   double time_s = 0.0;  ///< simulated time of the frame
-  /// Where each pixel sees the ground, and the puddles there: kept from frame to frame (same
-  /// camera, same pixels, same puddles).
+  /// Where each pixel sees the ground: kept from frame to frame (same camera, same pixels).
   GroundPixels ground_pixels;
-  std::vector<float> puddle_share;
-  sim::PuddleParams puddle_share_for;
   float flash = 0.0f;              ///< 0..1
   glm::vec3 flash_position{0.0f};  ///< where the lightning light sits
 };

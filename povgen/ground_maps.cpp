@@ -155,16 +155,14 @@ bool stir_film(const GroundPixels& pixels, const sim::Ripple& ripple, RippleMap&
 
 }  // namespace
 
-void draw_ripples(const GroundPixels& pixels, const std::vector<float>& share,
-                  const std::vector<sim::Ripple>& ripples, RippleMap& map) {
+void draw_ripples(const GroundPixels& pixels, const std::vector<sim::Ripple>& ripples,
+                  RippleMap& map) {
   const int w = pixels.width(), h = pixels.height();
   const std::size_t n = static_cast<std::size_t>(w) * h;
   map.width = w;
   map.height = h;
   map.height_m.assign(n, 0.0f);
   map.film.assign(n, 0.0f);
-  map.share = share;
-  map.share.resize(n, 0.0f);
   for (const sim::Ripple& ripple : ripples) {
     if (!ripple.on_puddle) {
       stir_film(pixels, ripple, map);
@@ -205,9 +203,8 @@ std::vector<std::uint16_t> ripple_pixels(const RippleMap& map) {
   std::vector<std::uint16_t> out(2 * map.height_m.size());
   for (std::size_t p = 0; p < map.height_m.size(); ++p) {
     out[2 * p] = to_u16(0.5 + map.height_m[p] / kRippleHeightRange);
-    // The ground's state (ground_maps.h); POV-Ray reads it back as 1 − transmit.
-    const double share = map.share[p];
-    out[2 * p + 1] = to_u16(share > 0.0 ? 0.5 + 0.5 * share : 0.5 * map.film[p]);
+    // Calm: opaque (ground_maps.h); POV-Ray reads the stir back as transmit.
+    out[2 * p + 1] = to_u16(1.0 - map.film[p]);
   }
   return out;
 }

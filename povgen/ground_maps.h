@@ -8,14 +8,13 @@
 // shimmering in POV-Ray, and the map costs the same whether the rain is light or heavy.
 //
 // The ripple map is a 16-bit gray + alpha PNG: gray the puddles' water height (0.5 where flat),
-// alpha the state of the ground, one number for the one lookup a traced frame's texture_map
-// makes per hit: 0 on calm film between puddles, stir/2 where fresh hits stir the film (their
+// alpha how calm the film between the puddles is: 1 − the stir of fresh hits there (their
 // short-lived dimples, too small to draw as rings at the camera's distance, darken its
-// reflection), 0.5 + share/2 over puddles (1 in the water). Calm film and deep water are
-// exactly 0 and 1, the texture_map's ends, where POV-Ray shades one texture instead of
-// blending two; the state is read without interpolation, so that a stirred pixel next to a
-// puddle never blends into a false edge. Deep water, where the heights matter, is opaque
-// (POV-Ray reads the channels as they are; other readers may premultiply).
+// reflection). Calm ground, the puddles' water among it, is exactly 1 (opaque: POV-Ray reads the
+// channels as they are, other readers may premultiply), the end of the texture_map where POV-Ray
+// shades one texture instead of blending two; the stir is read without interpolation, so that a
+// stirred pixel never blends into its neighbours. Where the puddles are, and their shorelines,
+// the mask says (sim/puddles.h's share, drawn by templates/raintrace_ground.inc).
 #pragma once
 
 #include <cstdint>
@@ -72,14 +71,12 @@ struct RippleMap {
   int width = 0, height = 0;
   std::vector<float> height_m;  ///< water height, m
   std::vector<float> film;      ///< how stirred the film between puddles is, 0..1
-  std::vector<float> share;     ///< puddle_mask(): how much of the pixel's ground is puddle
   [[nodiscard]] bool empty() const { return height_m.empty(); }
 };
 
-/// Draws the ripples into `map`, over the puddle mask `share` (puddle_mask() for the same
-/// pixels), resized to the pixels.
-void draw_ripples(const GroundPixels& pixels, const std::vector<float>& share,
-                  const std::vector<sim::Ripple>& ripples, RippleMap& map);
+/// Draws the ripples into `map`, resized to the pixels.
+void draw_ripples(const GroundPixels& pixels, const std::vector<sim::Ripple>& ripples,
+                  RippleMap& map);
 
 /// Writes an 8-bit gray PNG of values in [0, 1] (the puddle mask). Throws std::runtime_error.
 void write_mask_png(const std::filesystem::path& path, int width, int height,

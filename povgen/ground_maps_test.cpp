@@ -91,7 +91,7 @@ TEST(RippleMap, ARingIsDrawnRoundItsImpactAndGrowsWithAge) {
   auto radius_of = [&](double age) {
     const sim::Ripple r = sim::make_ripple({0.3f, 0.0f, 0.0f}, 4e-3f, age, 6e-3, true, 0.5);
     RippleMap map;
-    draw_ripples(pixels, {}, {r}, map);
+    draw_ripples(pixels, {r}, map);
     EXPECT_FALSE(map.empty());
     double weight = 0.0, sum = 0.0;
     for (std::size_t p = 0; p < map.height_m.size(); ++p) {
@@ -117,7 +117,7 @@ TEST(RippleMap, FilmRipplesStirTheFilmNotTheHeights) {
   auto film_of = [&](float z, int& touched) {
     const sim::Ripple r = sim::make_ripple({0.0f, 0.0f, z}, 2e-3f, 0.02, 0.3e-3, false, 0.5);
     RippleMap map;
-    draw_ripples(pixels, {}, {r}, map);
+    draw_ripples(pixels, {r}, map);
     EXPECT_FALSE(map.empty());
     float stirred = 0.0f;
     touched = 0;
@@ -145,20 +145,19 @@ TEST(RippleMap, FilmRipplesStirTheFilmNotTheHeights) {
   RippleMap map;
   // Out of view: nothing drawn.
   const sim::Ripple behind = sim::make_ripple({0.0f, 0.0f, -9.0f}, 2e-3f, 0.1, 6e-3, true, 0.5);
-  draw_ripples(pixels, {}, {behind}, map);
+  draw_ripples(pixels, {behind}, map);
   EXPECT_EQ(*std::max_element(map.film.begin(), map.film.end()), 0.0f);
   EXPECT_EQ(*std::max_element(map.height_m.begin(), map.height_m.end()), 0.0f);
 }
 
 TEST(RippleMap, PngHoldsHeightsAndTheGroundsStateAsPovRayReadsThem) {
-  // Gray = 0.5 + h / range; alpha the ground's state: 0.5 + share/2 on a puddle, film/2 off
-  // them; 16 bits each, written as they are (no alpha premultiplication by the writer).
+  // Gray = 0.5 + h / range; alpha how calm the film is, 1 − stir; 16 bits each, written as
+  // they are (no alpha premultiplication by the writer).
   RippleMap map;
   map.width = 3;
   map.height = 1;
   map.height_m = {0.001f, -0.0005f, 0.0f};
-  map.film = {0.0f, 0.25f, 0.0f};
-  map.share = {1.0f, 0.0f, 0.5f};
+  map.film = {0.0f, 0.25f, 1.0f};
   const std::filesystem::path path =
       std::filesystem::temp_directory_path() / "raintrace_ripple_map_test.png";
   write_ripple_png(path, map);
@@ -175,9 +174,9 @@ TEST(RippleMap, PngHoldsHeightsAndTheGroundsStateAsPovRayReadsThem) {
   ASSERT_TRUE(in->read_image(0, 0, 0, 2, OIIO::TypeDesc::UINT16, raw.data()));
   EXPECT_EQ(raw, ripple_pixels(map));
   EXPECT_EQ(raw[0], static_cast<std::uint16_t>(std::lround((0.5 + 0.001 / 0.004) * 65535)));
-  EXPECT_EQ(raw[1], 65535);  // deep water: exactly the texture_map's end
-  EXPECT_EQ(raw[3], static_cast<std::uint16_t>(std::lround(0.125 * 65535)));
-  EXPECT_EQ(raw[5], static_cast<std::uint16_t>(std::lround(0.75 * 65535)));
+  EXPECT_EQ(raw[1], 65535);  // calm: exactly the texture_map's end
+  EXPECT_EQ(raw[3], static_cast<std::uint16_t>(std::lround(0.75 * 65535)));
+  EXPECT_EQ(raw[5], 0);  // all stirred
   std::filesystem::remove(path);
 }
 

@@ -23,6 +23,7 @@ std::string ground_scene_text(const ExportParams& look) {
   text += "#declare RT_GroundHeight=" + std::to_string(look.height) + ";\n";
   text += "#declare RT_GroundY=" + format_number(look.ground.ground_y_m) + ";\n";
   text += "#declare RT_PuddleMask=\"" + std::string{kPuddleMask} + "\";\n";
+  text += "#declare RT_PuddleFringe=" + format_number(sim::PuddleField::kFringeM) + ";\n";
   text += "#declare RT_RippleHeightRange=" + format_number(kRippleHeightRange) + ";\n";
   const double roughness =
       look.ground.ripples.enabled

@@ -63,7 +63,6 @@ TEST(GroundScene, FrameDeclaresItsTimeAndNamesItsRippleMapWithItsHash) {
   values.ripples.height = 1;
   values.ripples.height_m = {0.0f};
   values.ripples.film = {0.0f};
-  values.ripples.share = {0.0f};
   const std::string flat = frame_text(values);
   EXPECT_NE(flat.find("#declare RT_RippleMap=\"ripples/ripple_0012.png\"; // "), std::string::npos)
       << flat;
@@ -90,7 +89,6 @@ TEST(GroundScene, SharedFilesHoldTheIncludeAndTheMaskFramesTheirMaps) {
   values.ripples.height = 36;
   values.ripples.height_m.assign(64 * 36, 0.0f);
   values.ripples.film.assign(64 * 36, 0.0f);
-  values.ripples.share.assign(64 * 36, 0.0f);
   write_frame_file(dir / "frames" / "frame_0001.pov", values, hash, 1);
   EXPECT_TRUE(fs::is_regular_file(dir / "ripples" / "ripple_0001.png"));
   fs::remove_all(dir);

@@ -1,8 +1,8 @@
 // The wet ground rendered by the real POV-Ray (ctest label `povray`; skipped without povray):
 // ripples appear in the picture where their impacts were simulated and spread with time, the
 // rain's unresolved roughness does not alias into glints without antialiasing, a puddle shows
-// the ground beneath it, and splashes carry on past the simulated volume of drops without an
-// edge.
+// the ground beneath it, its shoreline is ragged, and splashes carry on past the simulated
+// volume of drops without an edge.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -72,6 +72,17 @@ plane { y, 0
 }
 sky_sphere { pigment { rgb 0 } }
 light_source { <0, 9000, -5000> color rgb 1 parallel point_at 0 }
+)";
+
+/// Puddles on a black ground under a uniform white sky, with no light: the water shows the sky
+/// it mirrors (2 % of it head-on, more at grazing angles), the dry ground nothing at all.
+constexpr const char* kWaterUnderWhiteSky = R"(
+#declare Dry = texture { pigment { rgb 0 } finish { ambient 0 diffuse 0 } }
+plane { y, 0
+  texture { RT_WetGround(Dry) }
+  interior { ior 1.33 }
+}
+sky_sphere { pigment { rgb 1 } }
 )";
 
 /// A folder whose environment is `environment` (kWetPlane unless given), with frames 1..n from
@@ -302,12 +313,13 @@ TEST(PovRayGround, PuddleShowsTheGroundBeneathItsSurface) {
     for (int i = 0; i < look.width; ++i) {
       const std::size_t p = static_cast<std::size_t>(j) * look.width + i;
       if (!pixels.hits(p) || pixels.z(p) > 30.0) continue;
-      const double f = field.value(pixels.x(p), pixels.z(p)) - field.threshold();
-      if (f > 0.3) {
+      // Beyond the shorelines' band (sim::PuddleField::kFringeM), where the relief moves none.
+      const double share = field.share(pixels.x(p), pixels.z(p));
+      if (share >= 1.0) {
         water += image[3 * p + 1];
         water_black += black_bed[3 * p + 1];
         ++n_water;
-      } else if (f < -0.3) {
+      } else if (share <= 0.0) {
         ground += image[3 * p + 1];
         ++n_ground;
       }
@@ -324,6 +336,64 @@ TEST(PovRayGround, PuddleShowsTheGroundBeneathItsSurface) {
   EXPECT_NEAR(ratio, 1.0, 0.05) << "the bed does not show through the water as it should";
   EXPECT_LT(black_ratio, 0.3) << "without RT_PuddleBed the puddles are no longer dark";
   fs::remove_all(with_bed);
+}
+
+// A puddle's shoreline follows the road's relief within its band: water in the low spots outside
+// the smooth field's edge, dry islands inside it — and nothing of that beyond the band, where the
+// mask is 0 or 1. (With a smooth edge, the band's outer half would be dry and its inner half
+// water.)
+TEST(PovRayGround, ShorelinesAreRaggedWithinTheirBandAndExactBeyondIt) {
+  SKIP_WITHOUT_POVRAY();
+  ExportParams look;
+  look.width = 640;
+  look.height = 360;
+  look.camera.position = {0.0, 1.6, -4.0};
+  look.camera.look_at = {0.0, 0.0, 6.0};
+  look.camera.fov_deg = 40.0;
+  look.ground.puddles.coverage = 0.4;
+  look.ground.puddles.size_m = 1.5;
+  look.rain.rate_mm_per_h = 0.0;  // calm water
+  look.rain_medium = false;
+  const sim::PuddleField field(look.ground.puddles, look.ground.puddles.seed);
+  std::vector<sim::Frame> frames(1);
+  frames[0].index = 1;
+  const fs::path dir = wet_folder("shore", look, frames, kWaterUnderWhiteSky);
+  ASSERT_EQ(run_povray(dir, "scene.ini +SF1 +EF1 -A"), 0) << log_of(dir);
+  const auto image = read_rgb(dir / "images" / "frame_0001.exr");
+  ASSERT_EQ(image.size(), static_cast<std::size_t>(3 * look.width * look.height));
+
+  // Pixels within 12 m of the camera (a pixel spans under 3 cm of ground along the line of
+  // sight, so the relief's 10 cm octave is drawn), by where they lie against the band; water is
+  // anything brighter than half the mirror's head-on 2 %.
+  const GroundPixels pixels(look.camera, look.width, look.height, 0.0);
+  struct Count {
+    int wet = 0, all = 0;
+    [[nodiscard]] double share() const { return static_cast<double>(wet) / std::max(all, 1); }
+  };
+  Count dry_side, outer_band, inner_band, water_side;
+  for (std::size_t p = 0; p < pixels.width() * static_cast<std::size_t>(pixels.height()); ++p) {
+    if (!pixels.hits(p) || pixels.z(p) > 8.0) continue;
+    const double share = field.share(pixels.x(p), pixels.z(p));
+    Count& c = share <= 0.0  ? dry_side
+               : share < 0.5 ? outer_band
+               : share < 1.0 ? inner_band
+                             : water_side;
+    c.wet += image[3 * p + 1] > 0.01 ? 1 : 0;
+    ++c.all;
+  }
+  std::printf(
+      "water: %.4f beyond the band on the dry side, %.3f in its outer half, %.3f in its "
+      "inner half, %.4f beyond it in the water (%d, %d, %d, %d pixels)\n",
+      dry_side.share(), outer_band.share(), inner_band.share(), water_side.share(), dry_side.all,
+      outer_band.all, inner_band.all, water_side.all);
+  ASSERT_GT(std::min({dry_side.all, outer_band.all, inner_band.all, water_side.all}), 2000);
+  EXPECT_LT(dry_side.share(), 0.002);
+  EXPECT_GT(water_side.share(), 0.998);
+  EXPECT_GT(outer_band.share(), 0.1) << "no stray water outside the smooth edge";
+  EXPECT_LT(outer_band.share(), 0.5);
+  EXPECT_LT(inner_band.share(), 0.95) << "no dry islands inside the smooth edge";
+  EXPECT_GT(inner_band.share(), 0.5);
+  fs::remove_all(dir);
 }
 
 TEST(PovRayGround, SplashesGoOnPastTheSimulatedVolumeWithoutAnEdge) {

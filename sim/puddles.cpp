@@ -33,7 +33,7 @@ PuddleField::PuddleField(const PuddleParams& params, std::uint64_t seed)
   if (!(params.coverage > 0.0)) return;
   const double k0 = kPi / params.size_m;
   std::uint64_t term = 0;
-  double variance = 0.0;
+  double variance = 0.0, slope_variance = 0.0;
   for (const Band& band : kBands) {
     for (int i = 0; i < band.waves; ++i, ++term) {
       auto u = [&](int dim) { return uniform(seed, Stream::puddles, term, dim); };
@@ -43,10 +43,14 @@ PuddleField::PuddleField(const PuddleParams& params, std::uint64_t seed)
       m_waves.push_back(
           {k * std::cos(direction), k * std::sin(direction), 2.0 * kPi * u(2), band.weight});
       variance += 0.5 * band.weight * band.weight;
+      // A cosine's slope along one horizontal direction has mean square a²k²/4 (cos² of the
+      // angle to k averages 1/2, the cosine's own square 1/2).
+      slope_variance += 0.25 * band.weight * band.weight * k * k;
     }
   }
   const double scale = 1.0 / std::sqrt(variance);
   for (Wave& w : m_waves) w.amplitude *= scale;
+  m_edge = kFringeM * std::sqrt(slope_variance) * scale;
 
   std::vector<double> samples;
   samples.reserve(static_cast<std::size_t>(kSamples) * kSamples);
@@ -93,8 +97,7 @@ PuddleField::Water PuddleField::water_at(double x, double z) const {
 
 double PuddleField::share(double x, double z) const {
   if (m_waves.empty()) return 0.0;
-  const double s = std::clamp((value(x, z) - m_threshold + m_edge) / (2.0 * m_edge), 0.0, 1.0);
-  return s * s * (3.0 - 2.0 * s);
+  return std::clamp(0.5 + (value(x, z) - m_threshold) / (2.0 * m_edge), 0.0, 1.0);
 }
 
 }  // namespace raintrace::sim

@@ -41,19 +41,24 @@ class PuddleField {
     bool puddle = false;
   };
   [[nodiscard]] Water water_at(double x, double z) const;
-  /// How much of a point is puddle for drawing, 0..1: a smooth step ±edge() around the
-  /// threshold (a few cm wide on the ground), >= 0.5 exactly where in_puddle().
+  /// Half the width of the band around a puddle's edge that share() spans, on the ground.
+  static constexpr double kFringeM = 0.25;
+  /// The field's level across a puddle's edge for drawing, 0..1: 0.5 on the edge, rising
+  /// linearly from 0 to 1 over ±kFringeM (on average: the field's rms slope across an edge), so
+  /// >= 0.5 exactly where in_puddle(). The renderer draws the shoreline within that band, where
+  /// the level beats the road's own relief (templates/raintrace_ground.inc).
   [[nodiscard]] double share(double x, double z) const;
 
   [[nodiscard]] bool empty() const { return m_waves.empty(); }
   [[nodiscard]] const std::vector<Wave>& waves() const { return m_waves; }
   [[nodiscard]] double threshold() const { return m_threshold; }
+  /// share()'s half width in units of the field: kFringeM times its rms slope in one direction.
   [[nodiscard]] double edge() const { return m_edge; }
 
  private:
   std::vector<Wave> m_waves;
   double m_threshold = 0.0;
-  double m_edge = 0.03;
+  double m_edge = 0.0;
   double m_film_m = 0.0;
   double m_depth_m = 0.0;
 };

@@ -2,6 +2,7 @@
 #include "sim/puddles.h"
 
 #include <gtest/gtest.h>
+#include <algorithm>
 #include <cmath>
 
 namespace raintrace::sim {
@@ -72,6 +73,34 @@ TEST(Puddles, SizeSetsHowFarApartPuddlesAre) {
   };
   const double ratio = static_cast<double>(edges(1.0)) / edges(2.0);
   EXPECT_NEAR(ratio, 2.0, 0.4);
+}
+
+TEST(Puddles, DrawnShareSpansTheFringeAcrossAnEdge) {
+  // share() rises from 0 to 1 over 2·kFringeM on average: edge() is kFringeM times the field's
+  // rms slope along one direction, measured here by differences along x and along z.
+  for (const double size : {0.5, 1.2, 4.0}) {
+    PuddleParams p = puddles(0.25);
+    p.size_m = size;
+    const PuddleField field(p, 11);
+    const double h = 1e-4 * size;
+    double sum_x = 0.0, sum_z = 0.0;
+    int n = 0;
+    for (double x = 0.0; x < 30.0 * size; x += 0.113 * size) {
+      for (double z = 0.0; z < 30.0 * size; z += 0.127 * size, ++n) {
+        const double dx = (field.value(x + h, z) - field.value(x - h, z)) / (2.0 * h);
+        const double dz = (field.value(x, z + h) - field.value(x, z - h)) / (2.0 * h);
+        sum_x += dx * dx;
+        sum_z += dz * dz;
+      }
+    }
+    EXPECT_NEAR(std::sqrt(sum_x / n) * PuddleField::kFringeM / field.edge(), 1.0, 0.15) << size;
+    EXPECT_NEAR(std::sqrt(sum_z / n) * PuddleField::kFringeM / field.edge(), 1.0, 0.15) << size;
+    // Linear across the band, 0.5 on the edge.
+    EXPECT_DOUBLE_EQ(
+        field.share(0.3, 0.7),
+        std::clamp(0.5 + (field.value(0.3, 0.7) - field.threshold()) / (2.0 * field.edge()), 0.0,
+                   1.0));
+  }
 }
 
 }  // namespace
