@@ -7,7 +7,8 @@
 //    upside down. The scene is replaced by closeup.inc's test card (RT_TestCard: a sky warm
 //    above and blue below the line of sight to the drop), so "upside down" has one meaning;
 //  - default (the paper's night street with streetlights): the wet road and its puddles mirror
-//    the lit air around the lamps, not only the lamps themselves.
+//    the lit air around the lamps, not only the lamps themselves; the parked cars' rain beads
+//    break the lamps' highlights into glints.
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
@@ -235,6 +236,35 @@ TEST(ExampleFigures, DefaultStreetMirrorsTheLampsHazeInTheWetRoad) {
   ASSERT_GT(without, 0.0);
   std::printf("near road with haze / without: %.4f\n", with_haze / without);
   EXPECT_GT(with_haze / without, 1.03) << "the wet road does not mirror the lamps' haze";
+  fs::remove_all(dir.parent_path());
+}
+
+// default: frame 1 at final quality (glass reflects only there) with the rain beads on the
+// parked cars (night_street's RT_CarBeads) and with smooth, dry paint and glass. The beads are
+// small curved mirrors: where the smooth car shows one broad highlight or none, the beaded one
+// sends the lamps' glints to the camera from many points — pixels of the two nearest cars at
+// least 0.05 brighter (linear; their body is ~0.02-0.05) with the beads than without. Measured:
+// 49 of 9100 (0 without beads, by construction; 31 at 0.1 brighter).
+TEST(ExampleFigures, DefaultStreetCarsGlintWithRainBeads) {
+  if (!have_povray()) GTEST_SKIP() << "povray is not installed";
+  const fs::path dir = work_dir("default_cars");
+  export_example("default", dir, "1");
+  const std::string linear = "+FN16 File_Gamma=1.0 Declare=RT_Preview=0";
+  const Image wet = render(dir, "frames/frame_0001.pov", "wet", 640, linear);
+  const Image dry =
+      render(dir, "frames/frame_0001.pov", "dry", 640, linear + " Declare=RT_CarBeads=0");
+  ASSERT_EQ(wet.width, 640);
+  ASSERT_EQ(wet.rgb.size(), dry.rgb.size());
+  int glints = 0, pixels = 0;
+  for (int y = 160; y < 225; ++y) {  // the two cars nearest the camera, right of the road
+    for (int x = 360; x < 500; ++x) {
+      ++pixels;
+      if (wet.luma(x, y) - dry.luma(x, y) > 0.05f) ++glints;
+    }
+  }
+  std::printf("glints on the nearest cars: %d of %d pixels\n", glints, pixels);
+  EXPECT_GE(glints, 20) << "the wet cars show no glints of their rain beads";
+  EXPECT_LT(glints, pixels / 10) << "the beads glitter everywhere, not in the highlights";
   fs::remove_all(dir.parent_path());
 }
 
