@@ -85,6 +85,29 @@ plane { y, 0
 sky_sphere { pigment { rgb 1 } }
 )";
 
+/// The view of the puddle tests: the road from 1.6 m up, looking down to a point 10 m ahead,
+/// 16:9 at `width` pixels.
+ExportParams road_view(int width) {
+  ExportParams look;
+  look.width = width;
+  look.height = width * 9 / 16;
+  look.camera.position = {0.0, 1.6, -4.0};
+  look.camera.look_at = {0.0, 0.0, 6.0};
+  look.camera.fov_deg = 40.0;
+  return look;
+}
+
+/// road_view over calm puddles: no rain (no rings, no roughness, no rain medium), standing
+/// water on `coverage` of the road in patches of about `size_m`.
+ExportParams calm_puddles(int width, double coverage, double size_m) {
+  ExportParams look = road_view(width);
+  look.ground.puddles.coverage = coverage;
+  look.ground.puddles.size_m = size_m;
+  look.rain.rate_mm_per_h = 0.0;
+  look.rain_medium = false;
+  return look;
+}
+
 /// A folder whose environment is `environment` (kWetPlane unless given), with frames 1..n from
 /// `frames`.
 fs::path wet_folder(const std::string& name, const ExportParams& base,
@@ -199,12 +222,7 @@ TEST(PovRayGround, UnresolvedRoughnessDoesNotAliasIntoGlints) {
   // noise as drawn must be resolved — neighbouring pixels tilted alike — where the true scale
   // (RT_NoiseSpans = 0) decorrelates them into a salt of glints; and it must still disturb
   // the mirror.
-  ExportParams look;
-  look.width = 640;
-  look.height = 360;
-  look.camera.position = {0.0, 1.6, -4.0};
-  look.camera.look_at = {0.0, 0.0, 6.0};
-  look.camera.fov_deg = 40.0;
+  ExportParams look = road_view(640);
   look.ground.puddles.coverage = 0.9;
   look.ground.puddles.size_m = 20.0;
   look.rain_medium = false;  // the rain's roughness alone makes the difference
@@ -279,16 +297,7 @@ TEST(PovRayGround, UnresolvedRoughnessDoesNotAliasIntoGlints) {
 // through the water match, as the wet road's own finish does.)
 TEST(PovRayGround, PuddleShowsTheGroundBeneathItsSurface) {
   SKIP_WITHOUT_POVRAY();
-  ExportParams look;
-  look.width = 320;
-  look.height = 180;
-  look.camera.position = {0.0, 1.6, -4.0};
-  look.camera.look_at = {0.0, 0.0, 6.0};
-  look.camera.fov_deg = 40.0;
-  look.ground.puddles.coverage = 0.5;
-  look.ground.puddles.size_m = 1.0;
-  look.rain.rate_mm_per_h = 0.0;  // calm water: no rings, no roughness
-  look.rain_medium = false;
+  const ExportParams look = calm_puddles(320, 0.5, 1.0);
   const sim::PuddleField field(look.ground.puddles, look.ground.puddles.seed);
   std::vector<sim::Frame> frames(1);
   frames[0].index = 1;
@@ -344,16 +353,7 @@ TEST(PovRayGround, PuddleShowsTheGroundBeneathItsSurface) {
 // water.)
 TEST(PovRayGround, ShorelinesAreRaggedWithinTheirBandAndExactBeyondIt) {
   SKIP_WITHOUT_POVRAY();
-  ExportParams look;
-  look.width = 640;
-  look.height = 360;
-  look.camera.position = {0.0, 1.6, -4.0};
-  look.camera.look_at = {0.0, 0.0, 6.0};
-  look.camera.fov_deg = 40.0;
-  look.ground.puddles.coverage = 0.4;
-  look.ground.puddles.size_m = 1.5;
-  look.rain.rate_mm_per_h = 0.0;  // calm water
-  look.rain_medium = false;
+  const ExportParams look = calm_puddles(640, 0.4, 1.5);
   const sim::PuddleField field(look.ground.puddles, look.ground.puddles.seed);
   std::vector<sim::Frame> frames(1);
   frames[0].index = 1;
