@@ -53,7 +53,8 @@ void prepare_povray_home(const std::filesystem::path& out_dir);
 
 /// The lines of a POV-Ray log that explain a failure: each "File '…' line N: …" message joined
 /// with its wrapped continuation lines, then any other error lines ("Fatal error…",
-/// "Render failed", "Parse Error…"). Empty when the log names no error.
+/// "Render failed", "Parse Error…"), and a missing font with the Debian package that ships
+/// POV-Ray's fonts. Empty when the log names no error.
 std::vector<std::string> povray_error_lines(const std::string& log_text);
 
 }  // namespace raintrace::render

@@ -69,6 +69,25 @@ TEST(PovErrorLines, JoinsTheWrappedLocationLineAndKeepsTheVerdict) {
   EXPECT_EQ(lines[2], "Render failed");
 }
 
+// Verbatim tail of a POV-Ray 3.7.0.10 log whose scene asks for a font it cannot find: the
+// error that names it is only a "Possible Parse Error", the fatal one names no file.
+constexpr const char* kMissingFontLog =
+    "==== [Parsing...] ==========================================================\n"
+    "File 'environment.inc' line 470: Possible Parse Error: Cannot find file\n"
+    " 'cyrvetic.ttf', even after trying to append file type extension.\n"
+    "File 'environment.inc' line 470: Possible Parse Error: Cannot open font file.\n"
+    "Fatal error in parser: Cannot open file.\n"
+    "Render failed\n";
+
+TEST(PovErrorLines, AMissingFontNamesThePackageThatShipsIt) {
+  const auto lines = povray_error_lines(kMissingFontLog);
+  ASSERT_EQ(lines.size(), 3U);
+  EXPECT_NE(lines[0].find("line 470"), std::string::npos) << lines[0];
+  EXPECT_NE(lines[0].find("install the Debian package povray-includes"), std::string::npos)
+      << lines[0];
+  EXPECT_EQ(lines[1], "Fatal error in parser: Cannot open file.");
+}
+
 TEST(PovErrorLines, StatisticsAloneAreNoError) {
   EXPECT_TRUE(
       povray_error_lines("  Parse Time: 0 hours\n  Trace Time: 1 s\nPOV-Ray finished\n").empty());

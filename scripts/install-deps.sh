@@ -6,6 +6,8 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   povray                                   # the ray tracer
+  povray-includes                          # its standard include files and fonts (the shop
+                                           # signs' letters use cyrvetic.ttf)
   libglm-dev                               # vector maths (sim/)
   libopenimageio-dev openimageio-tools     # textures, image checks, compare/
   libtomlplusplus-dev                      # scene files
