@@ -244,7 +244,8 @@ TEST(ExampleFigures, DefaultStreetMirrorsTheLampsHazeInTheWetRoad) {
 // small curved mirrors: where the smooth car shows one broad highlight or none, the beaded one
 // sends the lamps' glints to the camera from many points — pixels of the two nearest cars at
 // least 0.05 brighter (linear; their body is ~0.02-0.05) with the beads than without. Measured:
-// 49 of 9100 (0 without beads, by construction; 31 at 0.1 brighter).
+// 28 of 9100 on the paint (0 without beads, by construction); 49 while the glass carried beads
+// too, before it became clear enough to show the cabin (a beaded pane read as salt).
 TEST(ExampleFigures, DefaultStreetCarsGlintWithRainBeads) {
   if (!have_povray()) GTEST_SKIP() << "povray is not installed";
   const fs::path dir = work_dir("default_cars");
@@ -263,7 +264,7 @@ TEST(ExampleFigures, DefaultStreetCarsGlintWithRainBeads) {
     }
   }
   std::printf("glints on the nearest cars: %d of %d pixels\n", glints, pixels);
-  EXPECT_GE(glints, 20) << "the wet cars show no glints of their rain beads";
+  EXPECT_GE(glints, 14) << "the wet cars show no glints of their rain beads";
   EXPECT_LT(glints, pixels / 10) << "the beads glitter everywhere, not in the highlights";
   fs::remove_all(dir.parent_path());
 }
