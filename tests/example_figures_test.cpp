@@ -244,7 +244,7 @@ TEST(ExampleFigures, DefaultStreetMirrorsTheLampsHazeInTheWetRoad) {
 // small curved mirrors: where the smooth car shows one broad highlight or none, the beaded one
 // sends the lamps' glints to the camera from many points — pixels of the two nearest cars at
 // least 0.05 brighter (linear; their body is ~0.02-0.05) with the beads than without. Measured:
-// 23 of 9100 on the paint (0 without beads, by construction; 28 while the second car was grey
+// 22 of 9100 on the paint (0 without beads, by construction; 28 while the second car was grey
 // rather than silver); 49 while the glass carried beads too, before it became clear enough to
 // show the cabin (a beaded pane read as salt).
 TEST(ExampleFigures, DefaultStreetCarsGlintWithRainBeads) {
