@@ -69,8 +69,9 @@ TEST(PovErrorLines, JoinsTheWrappedLocationLineAndKeepsTheVerdict) {
   EXPECT_EQ(lines[2], "Render failed");
 }
 
-// Verbatim tail of a POV-Ray 3.7.0.10 log whose scene asks for a font it cannot find: the
-// error that names it is only a "Possible Parse Error", the fatal one names no file.
+// Tail of a POV-Ray 3.7.0.10 log whose scene asks for a font it cannot find, as it printed it
+// (file name and line changed to the street's include): the error that names the font is only a
+// "Possible Parse Error", the fatal one names no file.
 constexpr const char* kMissingFontLog =
     "==== [Parsing...] ==========================================================\n"
     "File 'environment.inc' line 470: Possible Parse Error: Cannot find file\n"

@@ -91,6 +91,27 @@ Image render(const fs::path& dir, const std::string& scene, const std::string& n
   return read_image(dir / "images" / (name + ".png"));
 }
 
+// Frame 1 of the default example exported into a fresh folder NAME and rendered twice at WIDTH
+// as linear 16-bit PNG (plus OPTIONS): as exported, and with CHANGE, one more POV-Ray option (a
+// `Declare=` that turns one thing of the street off or sets it otherwise). The folder is removed
+// once both are read.
+struct DefaultPair {
+  Image as_exported;
+  Image changed;
+};
+DefaultPair render_default_twice(const std::string& name, int width, const std::string& options,
+                                 const std::string& change) {
+  const fs::path dir = work_dir(name);
+  export_example("default", dir, "1");
+  const std::string linear = "+FN16 File_Gamma=1.0 " + options;
+  DefaultPair pair{render(dir, "frames/frame_0001.pov", "as_exported", width, linear),
+                   render(dir, "frames/frame_0001.pov", "changed", width, linear + " " + change)};
+  EXPECT_EQ(pair.as_exported.width, width);
+  EXPECT_EQ(pair.as_exported.rgb.size(), pair.changed.rgb.size());
+  fs::remove_all(dir.parent_path());
+  return pair;
+}
+
 // thunderstorm: every frame that draws a bolt, rendered as exported and again with its bolt
 // block removed (the flash's light stays). The channel is where the bolt alone makes a pixel
 // near white (≥ 0.9 after POV-Ray's clip to 1) that was at least 0.3 darker without it — the
@@ -218,12 +239,7 @@ TEST(ExampleFigures, CloseupDropFillsTheFrameAndTurnsTheSceneUpsideDown) {
 // brighter (mirrors see the glow's core, templates/night_street.inc RT_LampGlow).
 TEST(ExampleFigures, DefaultStreetMirrorsTheLampsHazeInTheWetRoad) {
   if (!have_povray()) GTEST_SKIP() << "povray is not installed";
-  const fs::path dir = work_dir("default");
-  export_example("default", dir, "1");
-  const std::string linear = "+FN16 File_Gamma=1.0";
-  const Image haze = render(dir, "frames/frame_0001.pov", "haze", 320, linear);
-  const Image clear =
-      render(dir, "frames/frame_0001.pov", "clear", 320, linear + " Declare=RT_LampHaze=0");
+  const auto [haze, clear] = render_default_twice("default", 320, "", "Declare=RT_LampHaze=0");
   ASSERT_FALSE(haze.rgb.empty());
   ASSERT_EQ(haze.rgb.size(), clear.rgb.size());
   double with_haze = 0.0, without = 0.0;
@@ -236,7 +252,6 @@ TEST(ExampleFigures, DefaultStreetMirrorsTheLampsHazeInTheWetRoad) {
   ASSERT_GT(without, 0.0);
   std::printf("near road with haze / without: %.4f\n", with_haze / without);
   EXPECT_GT(with_haze / without, 1.03) << "the wet road does not mirror the lamps' haze";
-  fs::remove_all(dir.parent_path());
 }
 
 // default: frame 1 at final quality (glass reflects only there) with the rain beads on the
@@ -249,12 +264,8 @@ TEST(ExampleFigures, DefaultStreetMirrorsTheLampsHazeInTheWetRoad) {
 // show the cabin (a beaded pane read as salt).
 TEST(ExampleFigures, DefaultStreetCarsGlintWithRainBeads) {
   if (!have_povray()) GTEST_SKIP() << "povray is not installed";
-  const fs::path dir = work_dir("default_cars");
-  export_example("default", dir, "1");
-  const std::string linear = "+FN16 File_Gamma=1.0 Declare=RT_Preview=0";
-  const Image wet = render(dir, "frames/frame_0001.pov", "wet", 640, linear);
-  const Image dry =
-      render(dir, "frames/frame_0001.pov", "dry", 640, linear + " Declare=RT_CarBeads=0");
+  const auto [wet, dry] =
+      render_default_twice("default_cars", 640, "Declare=RT_Preview=0", "Declare=RT_CarBeads=0");
   ASSERT_EQ(wet.width, 640);
   ASSERT_EQ(wet.rgb.size(), dry.rgb.size());
   int glints = 0, pixels = 0;
@@ -267,7 +278,6 @@ TEST(ExampleFigures, DefaultStreetCarsGlintWithRainBeads) {
   std::printf("glints on the nearest cars: %d of %d pixels\n", glints, pixels);
   EXPECT_GE(glints, 14) << "the wet cars show no glints of their rain beads";
   EXPECT_LT(glints, pixels / 10) << "the beads glitter everywhere, not in the highlights";
-  fs::remove_all(dir.parent_path());
 }
 
 // default: frame 1 with the traffic signals at the cross street showing red (night_street's
@@ -279,12 +289,8 @@ TEST(ExampleFigures, DefaultStreetCarsGlintWithRainBeads) {
 // sharp mirror images alone).
 TEST(ExampleFigures, DefaultStreetRoadMirrorsTheTrafficSignalsColour) {
   if (!have_povray()) GTEST_SKIP() << "povray is not installed";
-  const fs::path dir = work_dir("default_signals");
-  export_example("default", dir, "1");
-  const std::string linear = "+FN16 File_Gamma=1.0";
-  const Image red = render(dir, "frames/frame_0001.pov", "red", 320, linear);
-  const Image green =
-      render(dir, "frames/frame_0001.pov", "green", 320, linear + " Declare=RT_SignalAspect=2");
+  const auto [red, green] =
+      render_default_twice("default_signals", 320, "", "Declare=RT_SignalAspect=2");
   ASSERT_EQ(red.width, 320);
   ASSERT_EQ(red.rgb.size(), green.rgb.size());
   double redder = 0.0;
@@ -295,7 +301,6 @@ TEST(ExampleFigures, DefaultStreetRoadMirrorsTheTrafficSignalsColour) {
   }
   std::printf("road below the signals, red showing against green: %.3f\n", redder);
   EXPECT_GT(redder, 10.0) << "the wet road does not mirror the signals' colour";
-  fs::remove_all(dir.parent_path());
 }
 
 }  // namespace
