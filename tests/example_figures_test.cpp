@@ -303,5 +303,27 @@ TEST(ExampleFigures, DefaultStreetRoadMirrorsTheTrafficSignalsColour) {
   EXPECT_GT(redder, 10.0) << "the wet road does not mirror the signals' colour";
 }
 
+// default: frame 1 with the pavements' shallow puddles (night_street's RT_PavementPuddles 0.5)
+// and without them (0, the slabs only wet). Water darkens what lies under it, so a pavement
+// pixel can only get brighter where the water mirrors something lit above it: the shop windows
+// and fascias, the pharmacy's cross. Over the left pavement (x 0–220, y 184–294 of 640×360)
+// at least 40 pixels must be brighter by 0.005 (linear; the slabs there are ~0.02–0.04).
+// Measured: 92; with the water's reflection taken out, 0.
+TEST(ExampleFigures, DefaultPavementPuddlesMirrorTheLitShops) {
+  if (!have_povray()) GTEST_SKIP() << "povray is not installed";
+  const auto [water, slabs] =
+      render_default_twice("default_pavement", 640, "", "Declare=RT_PavementPuddles=0");
+  ASSERT_EQ(water.width, 640);
+  ASSERT_EQ(water.rgb.size(), slabs.rgb.size());
+  int mirrored = 0;
+  for (int y = 184; y < 294; ++y) {
+    for (int x = 0; x < 220; ++x) {
+      if (water.luma(x, y) - slabs.luma(x, y) > 0.005f) ++mirrored;
+    }
+  }
+  std::printf("left pavement pixels the puddles brighten: %d\n", mirrored);
+  EXPECT_GE(mirrored, 40) << "the pavement's puddles mirror nothing";
+}
+
 }  // namespace
 }  // namespace raintrace
