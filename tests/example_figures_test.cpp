@@ -91,6 +91,19 @@ Image render(const fs::path& dir, const std::string& scene, const std::string& n
   return read_image(dir / "images" / (name + ".png"));
 }
 
+// How many pixels of the rectangle x0 <= x < x1, y0 <= y < y1 are brighter in `lighter` than in
+// `base` by more than `by` (linear luma): what one change to the street added there.
+int pixels_brighter(const Image& lighter, const Image& base, int x0, int x1, int y0, int y1,
+                    float by) {
+  int count = 0;
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) {
+      if (lighter.luma(x, y) - base.luma(x, y) > by) ++count;
+    }
+  }
+  return count;
+}
+
 // Frame 1 of the default example exported into a fresh folder NAME and rendered twice at WIDTH
 // as linear 16-bit PNG (plus OPTIONS): as exported, and with CHANGE, one more POV-Ray option (a
 // `Declare=` that turns one thing of the street off or sets it otherwise). The folder is removed
@@ -268,13 +281,9 @@ TEST(ExampleFigures, DefaultStreetCarsGlintWithRainBeads) {
       render_default_twice("default_cars", 640, "Declare=RT_Preview=0", "Declare=RT_CarBeads=0");
   ASSERT_EQ(wet.width, 640);
   ASSERT_EQ(wet.rgb.size(), dry.rgb.size());
-  int glints = 0, pixels = 0;
-  for (int y = 160; y < 225; ++y) {  // the two cars nearest the camera, right of the road
-    for (int x = 360; x < 500; ++x) {
-      ++pixels;
-      if (wet.luma(x, y) - dry.luma(x, y) > 0.05f) ++glints;
-    }
-  }
+  // The two cars nearest the camera, right of the road.
+  const int pixels = (500 - 360) * (225 - 160);
+  const int glints = pixels_brighter(wet, dry, 360, 500, 160, 225, 0.05f);
   std::printf("glints on the nearest cars: %d of %d pixels\n", glints, pixels);
   EXPECT_GE(glints, 14) << "the wet cars show no glints of their rain beads";
   EXPECT_LT(glints, pixels / 10) << "the beads glitter everywhere, not in the highlights";
@@ -315,12 +324,7 @@ TEST(ExampleFigures, DefaultPavementPuddlesMirrorTheLitShops) {
       render_default_twice("default_pavement", 640, "", "Declare=RT_PavementPuddles=0");
   ASSERT_EQ(water.width, 640);
   ASSERT_EQ(water.rgb.size(), slabs.rgb.size());
-  int mirrored = 0;
-  for (int y = 184; y < 294; ++y) {
-    for (int x = 0; x < 220; ++x) {
-      if (water.luma(x, y) - slabs.luma(x, y) > 0.005f) ++mirrored;
-    }
-  }
+  const int mirrored = pixels_brighter(water, slabs, 0, 220, 184, 294, 0.005f);
   std::printf("left pavement pixels the puddles brighten: %d\n", mirrored);
   EXPECT_GE(mirrored, 40) << "the pavement's puddles mirror nothing";
 }
