@@ -329,5 +329,61 @@ TEST(ExampleFigures, DefaultPavementPuddlesMirrorTheLitShops) {
   EXPECT_GE(mirrored, 40) << "the pavement's puddles mirror nothing";
 }
 
+// Mean linear-luma gain of `lighter` over `base` in the rectangle x0 <= x < x1, y0 <= y < y1.
+double mean_gain(const Image& lighter, const Image& base, int x0, int x1, int y0, int y1) {
+  double sum = 0.0;
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) sum += lighter.luma(x, y) - base.luma(x, y);
+  }
+  return sum / ((x1 - x0) * (y1 - y0));
+}
+
+// default: frame 1 with the lamps' aureole (night_street's RT_AureoleShare 0.5, the default)
+// and without it (0). The mist's forward lobe lights the air around each lamp on every side,
+// above its head too, where the downward cone of side-scattered light does not reach, and the
+// halo fades with the angle from the lamp (∝ F(ρ/D)/ρ). The lamp on the right 28 m down the
+// street, 34.5 m from the camera, has its lens at (360, 76) of 640×360; 1 m there is ~20 px.
+// Just above its head (0.3–0.8 m, y 60–70) the air must gain more than 0.02 (linear luma; the
+// air there is ~0.035 without the halo), and at least 2.5 times what it gains 1.3–1.8 m above
+// (y 40–50). Measured: 0.0497 and 0.0109; without the aureole (RT_AureoleShare 0 in both), 0.
+TEST(ExampleFigures, DefaultStreetLampsHaveAnAureoleAboveTheirHeads) {
+  if (!have_povray()) GTEST_SKIP() << "povray is not installed";
+  const auto [halo, bare] =
+      render_default_twice("default_aureole", 640, "", "Declare=RT_AureoleShare=0");
+  ASSERT_EQ(halo.width, 640);
+  ASSERT_EQ(halo.rgb.size(), bare.rgb.size());
+  const double near = mean_gain(halo, bare, 350, 371, 60, 70);
+  const double far = mean_gain(halo, bare, 350, 371, 40, 50);
+  double air = 0.0;
+  for (int y = 60; y < 70; ++y) {
+    for (int x = 350; x < 371; ++x) air += bare.luma(x, y) / (21 * 10);
+  }
+  std::printf("aureole over the lamp 28 m down: %.5f just above the head (air %.5f without), "
+              "%.5f 1.3-1.8 m above\n", near, air, far);
+  EXPECT_GT(near, 0.02) << "no halo above the lamp head";
+  EXPECT_GT(near, 2.5 * far) << "the halo does not fade away from the lamp";
+}
+
+// default: frame 1 with the water film on wet paint, kerbs and plastic (night_street's
+// RT_FilmIor 1.33, the default) and without it (1: POV-Ray's Fresnel reflection then stays at
+// its minimum, as when an object has no interior). Fresnel's law only adds reflection toward
+// grazing angles, so the film can only brighten: the parked cars' flanks and roofs, seen along
+// the street, mirror the lamps and the lit air. Over the two nearest cars (x 360–500,
+// y 160–225 of 640×360) at least 100 pixels must be brighter by 0.005 (linear), and next to
+// none darker. Measured: 212 brighter, 0 darker; on the template before the film was given an
+// interior (both renders alike), 0.
+TEST(ExampleFigures, DefaultStreetWetPaintMirrorsMoreTowardGrazing) {
+  if (!have_povray()) GTEST_SKIP() << "povray is not installed";
+  const auto [film, bare] = render_default_twice("default_film", 640, "", "Declare=RT_FilmIor=1");
+  ASSERT_EQ(film.width, 640);
+  ASSERT_EQ(film.rgb.size(), bare.rgb.size());
+  const int brighter = pixels_brighter(film, bare, 360, 500, 160, 225, 0.005f);
+  const int darker = pixels_brighter(bare, film, 360, 500, 160, 225, 0.005f);
+  std::printf("nearest cars' pixels the water film brightens: %d (darkens: %d)\n", brighter,
+              darker);
+  EXPECT_GE(brighter, 100) << "the wet paint's reflection does not grow toward grazing";
+  EXPECT_LT(darker, 10) << "the film darkens the paint: Fresnel's law only adds reflection";
+}
+
 }  // namespace
 }  // namespace raintrace
