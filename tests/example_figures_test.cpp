@@ -359,8 +359,10 @@ TEST(ExampleFigures, DefaultStreetLampsHaveAnAureoleAboveTheirHeads) {
   for (int y = 60; y < 70; ++y) {
     for (int x = 350; x < 371; ++x) air += bare.luma(x, y) / (21 * 10);
   }
-  std::printf("aureole over the lamp 28 m down: %.5f just above the head (air %.5f without), "
-              "%.5f 1.3-1.8 m above\n", near, air, far);
+  std::printf(
+      "aureole over the lamp 28 m down: %.5f just above the head (air %.5f without), "
+      "%.5f 1.3-1.8 m above\n",
+      near, air, far);
   EXPECT_GT(near, 0.02) << "no halo above the lamp head";
   EXPECT_GT(near, 2.5 * far) << "the halo does not fade away from the lamp";
 }
