@@ -272,9 +272,10 @@ TEST(ExampleFigures, DefaultStreetMirrorsTheLampsHazeInTheWetRoad) {
 // small curved mirrors: where the smooth car shows one broad highlight or none, the beaded one
 // sends the lamps' glints to the camera from many points — pixels of the two nearest cars at
 // least 0.05 brighter (linear; their body is ~0.02-0.05) with the beads than without. Measured:
-// 22 of 9100 on the paint (0 without beads, by construction; 28 while the second car was grey
-// rather than silver); 49 while the glass carried beads too, before it became clear enough to
-// show the cabin (a beaded pane read as salt).
+// 27 of 9100 on the paint since the beads stand in patches with smooth sheets of water between
+// (22 when they covered all the paint; 0 without beads, by construction; 28 while the second car
+// was grey rather than silver); 49 while the glass carried beads too, before it became clear
+// enough to show the cabin (a beaded pane read as salt).
 TEST(ExampleFigures, DefaultStreetCarsGlintWithRainBeads) {
   if (!have_povray()) GTEST_SKIP() << "povray is not installed";
   const auto [wet, dry] =
@@ -327,6 +328,41 @@ TEST(ExampleFigures, DefaultPavementPuddlesMirrorTheLitShops) {
   const int mirrored = pixels_brighter(water, slabs, 0, 220, 184, 294, 0.005f);
   std::printf("left pavement pixels the puddles brighten: %d\n", mirrored);
   EXPECT_GE(mirrored, 40) << "the pavement's puddles mirror nothing";
+}
+
+// Mean red over green of `image` in the rectangle x0 <= x < x1, y0 <= y < y1: how orange the
+// light there is, whatever its brightness.
+double red_over_green(const Image& image, int x0, int x1, int y0, int y1) {
+  double red = 0.0;
+  double green = 0.0;
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) {
+      red += image.at(x, y)[0];
+      green += image.at(x, y)[1];
+    }
+  }
+  return green > 0.0 ? red / green : 0.0;
+}
+
+// default: frame 1 with the street's mix of lamps (night_street's RT_LampMix 1, the default)
+// and with every lamp the warm-white LED (0). The lamp on the left 40 m down is an old sodium
+// lamp, ~2000 K (linear sRGB <1, 0.54, 0.18> at the LEDs' luma, against their <1, 0.78, 0.52>):
+// the lit air just below its lens (x 253–263, y 103–109 of 640×360) must turn at least 25 %
+// more orange, red over green, while the air below the warm LED 16 m down (x 227–237,
+// y 28–34) stays within 3 %. Measured: 1.72 against 1.28 (+35 %), and 1.14 both times.
+TEST(ExampleFigures, DefaultStreetHasAnOldSodiumLampAmongItsLeds) {
+  if (!have_povray()) GTEST_SKIP() << "povray is not installed";
+  const auto [mixed, leds] = render_default_twice("default_lamps", 640, "", "Declare=RT_LampMix=0");
+  ASSERT_EQ(mixed.width, 640);
+  ASSERT_EQ(mixed.rgb.size(), leds.rgb.size());
+  const double sodium = red_over_green(mixed, 253, 263, 103, 109);
+  const double sodium_as_led = red_over_green(leds, 253, 263, 103, 109);
+  const double led = red_over_green(mixed, 227, 237, 28, 34);
+  const double led_alone = red_over_green(leds, 227, 237, 28, 34);
+  std::printf("red/green below the sodium lamp %.3f (as an LED %.3f); below the LED %.3f (%.3f)\n",
+              sodium, sodium_as_led, led, led_alone);
+  EXPECT_GT(sodium, 1.25 * sodium_as_led) << "the sodium lamp's light is not orange";
+  EXPECT_NEAR(led, led_alone, 0.03 * led_alone) << "the warm LED's light changed with the mix";
 }
 
 // Mean linear luma of `image` in the rectangle x0 <= x < x1, y0 <= y < y1.
