@@ -1,12 +1,13 @@
 // Full decode (not just the header): a truncated PNG has a valid header but fails its IDAT/IEND.
 #include "output/image_check.h"
 
-#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imageio.h>
 #include <fcntl.h>
 #include <fmt/core.h>
 #include <unistd.h>
 #include <array>
 #include <cerrno>
+#include <cstddef>
 #include <fstream>
 #include <system_error>
 #include <vector>
@@ -42,11 +43,17 @@ bool image_is_complete(const std::filesystem::path& path, int width, int height,
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) return fail("missing");
   if (path.extension() == ".png" && !png_has_end(path)) return fail("incomplete PNG (no IEND)");
-  OIIO::ImageBuf buf{path.string()};
-  if (!buf.read(0, 0, /*force=*/true)) return fail("unreadable: " + buf.geterror());
-  const auto& spec = buf.spec();
+  // ImageInput, not ImageBuf: ImageBuf asks OpenImageIO's shared ImageCache, which keeps the
+  // size of the first file it saw at a path, and frames are rewritten at the same names.
+  auto input = OIIO::ImageInput::open(path.string());
+  if (!input) return fail("unreadable: " + OIIO::geterror());
+  const OIIO::ImageSpec spec = input->spec();
   if (spec.width != width || spec.height != height) {
     return fail(fmt::format("{}x{} instead of {}x{}", spec.width, spec.height, width, height));
+  }
+  std::vector<std::byte> pixels(spec.image_bytes());
+  if (!input->read_image(0, 0, 0, spec.nchannels, spec.format, pixels.data())) {
+    return fail("unreadable: " + input->geterror());
   }
   return true;
 }

@@ -40,6 +40,29 @@ TEST(ImageIsComplete, AcceptsWholeImageRejectsTruncatedWrongSizeAndMissing) {
   EXPECT_FALSE(image_is_complete(dir / "hole.png", 64, 36));
 }
 
+TEST(ImageIsComplete, JudgesAFileReplacedAtTheSamePathByItsNewBytes) {
+  // POV-Ray writes every frame of a run to the same temporary names, and a re-render replaces
+  // a frame's EXR: an answer remembered from an earlier file at that path would be wrong.
+  const auto dir = testing::fresh_test_dir("check_replaced");
+  const auto path = dir / "frame.exr";
+  auto write_exr = [&](int width, int height) {
+    OIIO::ImageBuf img{OIIO::ImageSpec{width, height, 3, OIIO::TypeDesc::HALF}};
+    OIIO::ImageBufAlgo::fill(img, {0.5f, 0.25f, 0.125f});
+    const auto temp = dir / "next.exr";
+    ASSERT_TRUE(img.write(temp.string()));
+    std::filesystem::rename(temp, path);
+  };
+  write_exr(64, 37);
+  std::string why;
+  EXPECT_FALSE(image_is_complete(path, 64, 36, &why));
+  EXPECT_EQ(why, "64x37 instead of 64x36");
+  write_exr(64, 36);
+  EXPECT_TRUE(image_is_complete(path, 64, 36, &why)) << why;
+  std::ofstream{path, std::ios::binary};  // as POV-Ray leaves it just after opening it
+  EXPECT_FALSE(image_is_complete(path, 64, 36, &why));
+  EXPECT_EQ(why.rfind("unreadable", 0), 0U) << why;
+}
+
 TEST(FileFacts, AreTheSizeAndContentHashOfTheBytes) {
   const auto dir = testing::fresh_test_dir("facts");
   EXPECT_FALSE(file_facts(dir / "missing.png"));

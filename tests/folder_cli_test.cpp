@@ -390,7 +390,8 @@ TEST_F(PovrayFolderCli, ADevelopKilledHalfwayLeavesOnlyWholePngsAndTheRunResumes
     a.insert(a.end(), size.begin(), size.end());
     return a;
   };
-  ASSERT_EQ(run_raintrace(args(scene), dir / "a.log").exit_code, 0);
+  const auto first = run_raintrace(args(scene), dir / "a.log");
+  ASSERT_EQ(first.exit_code, 0) << first.output;
   const auto brighter = with_camera_keys(scene, dir / "brighter.toml", "exposure_ev = 1\n");
   ChildProcess child{raintrace_spec(args(brighter), dir / "b.log")};
   // Killed as soon as the first PNG with the new exposure is in place.
@@ -435,7 +436,8 @@ TEST_F(PovrayFolderCli, ADevelopKilledHalfwayLeavesOnlyWholePngsAndTheRunResumes
     a.insert(a.end(), size.begin(), size.end());
     return a;
   }();
-  ASSERT_EQ(run_raintrace(clean, dir / "clean.log").exit_code, 0);
+  const auto clean_run = run_raintrace(clean, dir / "clean.log");
+  ASSERT_EQ(clean_run.exit_code, 0) << clean_run.output;
   expect_same_as_clean_render(dir / "out", dir / "clean");
 }
 
