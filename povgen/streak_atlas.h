@@ -79,9 +79,10 @@ void write_streak_atlas(const std::filesystem::path& path, const StreakAtlasLayo
 
 /// Cell for a streak: motion = travel during the exposure / the drop's size along it (nearest
 /// column in log2; under 0.35 the still column), its footprint, and its opacity in the middle
-/// (times the column's gain, the nearest row in log2; above 1 counts as 1). −1 when the opacity is
-/// not positive or below the faintest row by more than half a step (callers thin such streaks to
-/// faintest_opacity()).
+/// (rescaled to the column's motion so that a quad (1 + motion) sizes long carries the drop's
+/// area, times the column's gain, the nearest row in log2; above 1 counts as 1). −1 when the
+/// opacity is not positive or below the faintest row by more than half a step (callers thin such
+/// streaks to faintest_opacity()).
 int streak_atlas_cell(const StreakAtlasLayout& layout, double motion, StreakFootprint footprint,
                       double opacity);
 
