@@ -73,6 +73,19 @@ enum class Quality {
 /// Scene-file names of Quality, in the order of its values.
 inline constexpr std::string_view kQualityNames[] = {"preview", "final"};
 
+/// How a lens opening (ExportParams::aperture_m) blurs the picture.
+enum class FocalBlur {
+  /// POV-Ray's focal blur over everything: up to 256 rays a pixel at quality final.
+  traced,
+  /// Only the rain, drawn out of focus: each drop's streak widened by its blur disc, its
+  /// coverage spread over the wider outline (frame_values.h). The scenery stays sharp, and the
+  /// frame costs what a pinhole's does: where the scenery lies far beyond the rain (a street
+  /// focused tens of metres away), its own blur is a fraction of the near rain's.
+  rain,
+};
+/// Scene-file names of FocalBlur, in the order of its values.
+inline constexpr std::string_view kFocalBlurNames[] = {"traced", "rain"};
+
 /// min_streak_coverage when a scene does not set it: the preview's and the final look's.
 inline constexpr double kPreviewStreakCoverage = 0.01;
 inline constexpr double kFinalStreakCoverage = 0.003;
@@ -95,6 +108,8 @@ struct ExportParams {
   /// focuses on camera.look_at and blurs the rest (POV-Ray focal blur): a point at distance d,
   /// the focus at f, spreads over a disc of aperture_m·|d − f|/d at the plane of focus.
   double aperture_m = 0.0;
+  /// What aperture_m blurs: everything, traced by POV-Ray, or the rain alone, drawn blurred.
+  FocalBlur focal_blur = FocalBlur::traced;
   /// The rain as simulated (cli/ copies it from the scene, like the camera): its drop sizes and
   /// rate give the rain medium beyond rain.far_m (rain_medium_text()).
   sim::RainParams rain;
@@ -145,11 +160,12 @@ struct ExportParams {
   double lightning_light = 8.0;
 };
 
-/// ExportParams' own keys, in four sections: [camera] aperture_m, [output] (after cli's
-/// `frames`), [export] and [lightning] light. Its camera is sim::kCameraParams, fog and
+/// ExportParams' own keys, in four sections: [camera] aperture_m and focal_blur, [output] (after
+/// cli's `frames`), [export] and [lightning] light. Its camera is sim::kCameraParams, fog and
 /// environment their own tables.
 inline constexpr sim::Param<ExportParams> kExportParams[] = {
     sim::number("camera", "aperture_m", &ExportParams::aperture_m, "m", sim::Range::closed(0, 1)),
+    sim::choice<&ExportParams::focal_blur>("camera", "focal_blur", kFocalBlurNames),
     sim::number("output", "fps", &ExportParams::fps, "1/s", sim::Range::open_closed(0, 240)),
     sim::integer("output", "width", &ExportParams::width, "pixels", 16, 8192),
     sim::integer("output", "height", &ExportParams::height, "pixels", 16, 8192),
@@ -168,6 +184,16 @@ inline constexpr sim::Param<ExportParams> kExportParams[] = {
                 sim::Range::closed(0, 100)),
 };
 static_assert(sim::well_formed<ExportParams>(kExportParams));
+
+/// POV-Ray traces the focal blur: a lens is open and focal_blur is traced.
+inline bool traces_focal_blur(const ExportParams& look) {
+  return look.aperture_m > 0.0 && look.focal_blur == FocalBlur::traced;
+}
+
+/// The lens blurs the rain alone: a lens is open and focal_blur is rain.
+inline bool blurs_rain_only(const ExportParams& look) {
+  return look.aperture_m > 0.0 && look.focal_blur == FocalBlur::rain;
+}
 
 /// Throws std::invalid_argument naming the first field out of its range (the tables above and
 /// sim::kCameraParams), or an environment that is not built in when no include is given.

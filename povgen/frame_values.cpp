@@ -28,6 +28,15 @@ struct StreakContext {
   float exposure_s;
   int width_px;
   float min_coverage;
+  float aperture = 0.0f;  ///< m: the lens opening that blurs the rain (0: drawn sharp)
+  float focus = 1.0f;     ///< m: camera depth of the plane of focus
+
+  /// Diameter of the disc a point at camera depth `depth` spreads over, measured at that depth:
+  /// a thin lens of opening A focused at f blurs it over A·|d − f|/d at the plane of focus,
+  /// which is d/f times as large as at the point's own depth.
+  [[nodiscard]] float blur_disc(float depth) const {
+    return aperture * std::fabs(depth - focus) / focus;
+  }
 };
 
 /// A number in [0, 1) that depends only on the drop's id (sim's hash): which far drops survive
@@ -50,8 +59,16 @@ bool make_streak(const StreakContext& ctx, std::uint64_t id, const glm::vec3& po
   // The drop's outline seen from the side: an ellipse of equal volume flattened along its
   // motion (Beard & Chuang), 2a across and 2b along.
   const auto ratio = static_cast<float>(drop_axis_ratio(diameter));
-  const float across = diameter / std::cbrt(ratio);
-  const float along = across * ratio;
+  // Out of focus, the lens spreads every point of the drop over its blur disc: the drop's image
+  // is its outline widened by the disc, and the light it carries, spread over the wider
+  // outline, keeps the drop's area of coverage (a defocused drop far smaller than its disc is
+  // the lens's bright, hard-edged disc, as it is in night photographs of rain).
+  const float blur = ctx.blur_disc(std::max(ctx.view.depth(position), 1e-3f));
+  const float sharp_across = diameter / std::cbrt(ratio);
+  const float sharp_along = sharp_across * ratio;
+  const float across = sharp_across + blur;
+  const float along = sharp_along + blur;
+  const float spread = (sharp_across * sharp_along) / (across * along);
   const auto travel =
       static_cast<float>(sim::streak_travel(speed, glm::dot(acceleration, axis), ctx.exposure_s));
   float length = travel + along;
@@ -62,7 +79,7 @@ bool make_streak(const StreakContext& ctx, std::uint64_t id, const glm::vec3& po
   const glm::vec3 middle = 0.5f * (start + end);
   const float depth = std::max(ctx.view.depth(middle), 1e-3f);
   const float pixel = ctx.view.pixel_size(depth, ctx.width_px);
-  float alpha = static_cast<float>(sim::streak_opacity(travel, along));
+  float alpha = static_cast<float>(sim::streak_opacity(travel, along)) * spread;
   // A drop narrower than a pixel covers only part of the pixels it crosses: draw it a pixel
   // wide at that share (the sub-pixel cells are flat across), not as a wider streak.
   float width = across;
@@ -126,8 +143,11 @@ void add_drops(const DropContext& ctx, std::size_t begin, std::size_t end,
     // has no motion blur: a drop that moves further is drawn as its streak, whose radiance is
     // the blurred average of what the drop refracts plus the lights it scatters — what its
     // refraction becomes when spread over more than its size (docs/rain-appearance.md).
-    if (glm::length(p - view.eye()) < ctx.split &&
-        diameter >= view.pixel_size(std::max(view.depth(p), 1e-3f), ctx.streaks.width_px)) {
+    // Out of focus by a pixel or more, it is the lens's disc, drawn as a streak (make_streak).
+    const float depth = std::max(view.depth(p), 1e-3f);
+    const float pixel = view.pixel_size(depth, ctx.streaks.width_px);
+    if (glm::length(p - view.eye()) < ctx.split && diameter >= pixel &&
+        ctx.streaks.blur_disc(depth) < pixel) {
       const float radius = 0.5f * diameter;
       const auto ratio = static_cast<float>(drop_axis_ratio(diameter));
       // Equal volume: the horizontal radius grows as the drop flattens, a = R·ratio^(-1/3).
@@ -266,8 +286,12 @@ void build_frame_values(const sim::Frame& frame, const ExportParams& look, Frame
   // it rather than dropped, so no light is lost whatever min_streak_coverage says.
   const double min_coverage =
       std::max(streak_coverage_threshold(look), streak_atlas_faintest_coverage(atlas));
-  const StreakContext ctx{view, atlas, static_cast<float>(look.camera.exposure_s), look.width,
-                          static_cast<float>(min_coverage)};
+  StreakContext ctx{view, atlas, static_cast<float>(look.camera.exposure_s), look.width,
+                    static_cast<float>(min_coverage)};
+  if (blurs_rain_only(look)) {
+    ctx.aperture = static_cast<float>(look.aperture_m);
+    ctx.focus = std::max(view.depth(glm::vec3(look.camera.look_at)), 1e-3f);
+  }
   const DropContext drops{ctx, frame.drops, static_cast<float>(look.sphere_distance_m)};
   add_drops_in_chunks(drops, values, threads);
 

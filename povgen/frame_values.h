@@ -68,10 +68,13 @@ struct FrameValues {
 double streak_coverage_threshold(const ExportParams& look);
 
 /// Builds the values of one frame. Drops nearer than look.sphere_distance_m that are at least
-/// one pixel across and move less than their own height during the exposure become spheres
-/// (stretched over their path), all others streaks whose opacity is the share of the exposure
-/// the drop covers each point (sim/streak.h); splash droplets follow, the same way
-/// (look.splash_keep of them, by id, carrying the others' light). Drops and droplets wholly
+/// one pixel across, move less than their own height during the exposure and (with
+/// focal_blur = rain) are out of focus by less than a pixel become spheres (stretched over
+/// their path), all others streaks whose opacity is the share of the exposure the drop covers
+/// each point (sim/streak.h). With focal_blur = rain a streak is built for its drop widened by
+/// the lens's blur disc at its depth, aperture_m·|d − f|/f (f: look_at's depth), its opacity
+/// scaled by the drop's outline over the widened one (same light). Splash droplets follow, the same
+/// way (look.splash_keep of them, by id, carrying the others' light). Drops and droplets wholly
 /// outside the view are dropped; a streak narrower (or shorter) than one pixel is drawn a pixel
 /// wide and fainter by the same factor (its coverage of the pixel). Streaks fainter than
 /// streak_coverage_threshold() are thinned out by drop id and the survivors drawn at that

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <glm/geometric.hpp>
 #include <limits>
+#include <numbers>
+#include <vector>
 
 #include "povgen/drop_shape.h"
 #include "povgen/test_support/synthetic_rain.h"
@@ -150,6 +152,108 @@ TEST(FrameValues, SubPixelNearDropsBecomeStreaks) {
   const FrameValues values = build_frame_values(frame, look);
   EXPECT_TRUE(values.drops.empty());
   EXPECT_EQ(values.streaks.size(), 1u);
+}
+
+/// The coverage a streak quad carries, ∫α dA over the quad as POV-Ray draws it: the quad's area
+/// times its atlas cell's mean opacity (the trapezoid rule over the texels, which bilinear
+/// filtering between corner-texel centres amounts to).
+double carried_coverage(const StreakValue& streak) {
+  static const StreakAtlasLayout atlas;
+  static const std::vector<std::uint16_t> px = streak_atlas_pixels(atlas);
+  const int row = streak.cell / atlas.columns();
+  const int column = streak.cell % atlas.columns();
+  double sum = 0.0;
+  for (int cy = 0; cy < atlas.cell_height; ++cy) {
+    const double wy = (cy == 0 || cy == atlas.cell_height - 1) ? 0.5 : 1.0;
+    for (int cx = 0; cx < atlas.cell_width; ++cx) {
+      const double wx = (cx == 0 || cx == atlas.cell_width - 1) ? 0.5 : 1.0;
+      const int x = column * atlas.cell_width + cx;
+      const int y = atlas.height() - 1 - (row * atlas.cell_height + cy);
+      sum += wx * wy * px[(static_cast<std::size_t>(y) * atlas.width() + x) * 2 + 1] / 65535.0;
+    }
+  }
+  const double mean = sum / ((atlas.cell_width - 1) * (atlas.cell_height - 1));
+  const auto& c = streak.corners;
+  return mean * glm::length(c[3] - c[0]) * glm::length(c[1] - c[0]);
+}
+
+TEST(FrameValues, OutOfFocusRainIsWidenedByItsBlurDiscAndKeepsItsLight) {
+  // A 2 mm drop (2.05074 mm across, 1.90225 mm along) falling at 9 m/s, 2 m from the eye, a
+  // lens 20 mm open focused 20 m away (look_at): a thin lens blurs it over a disc
+  // 0.02·|2 − 20|/20 = 18 mm across at its own depth, five pixels there (3.608 mm each).
+  sim::Frame frame;
+  add_drop(frame, {0.0f, 1.6f, -3.0f}, {0.0f, -9.0f, 0.0f}, 2e-3f);
+  ExportParams look = default_look();
+  look.min_streak_coverage = 0.0;
+  look.camera.look_at = {0.0, 1.6, 15.0};
+  const FrameValues sharp = build_frame_values(frame, look);
+  look.aperture_m = 0.02;
+  look.focal_blur = FocalBlur::rain;
+  const FrameValues blurred = build_frame_values(frame, look);
+  ASSERT_EQ(sharp.streaks.size(), 1u);
+  ASSERT_EQ(blurred.streaks.size(), 1u);
+  const auto& c = blurred.streaks[0].corners;
+  // The outline widened by the disc: 18 mm more across and along.
+  EXPECT_NEAR(glm::length(c[1] - c[0]), 0.00205074 + 0.018, 1e-6);
+  EXPECT_NEAR(glm::length(c[3] - c[0]), 0.18 + 0.00190225 + 0.018, 1e-5);
+  // Wider than a pixel now: the resolved columns (the sharp drop is sub-pixel).
+  const StreakAtlasLayout atlas;
+  EXPECT_GE(sharp.streaks[0].cell % atlas.columns(), atlas.motions);
+  EXPECT_LT(blurred.streaks[0].cell % atlas.columns(), atlas.motions);
+  // Defocus spreads the drop's light, it adds none: both carry the drop's area, π/4·2a·2b,
+  // to the atlas rows' 4.4 % and the texel sampling's few %.
+  const double area = std::numbers::pi / 4 * 0.00205074 * 0.00190225;
+  EXPECT_NEAR(carried_coverage(sharp.streaks[0]) / area, 1.0, 0.06);
+  EXPECT_NEAR(carried_coverage(blurred.streaks[0]) / area, 1.0, 0.06);
+}
+
+TEST(FrameValues, RainInTheFocalPlaneOrTracedBlurIsDrawnSharp) {
+  sim::Frame frame;
+  add_drop(frame, {0.3f, 1.5f, 15.0f}, {0.5f, -9.0f, 0.0f}, 2e-3f);  // 20 m deep
+  add_drop(frame, {0.0f, 1.6f, -3.0f}, {0.0f, -9.0f, 0.0f}, 2e-3f);  // 2 m deep
+  ExportParams look = default_look();
+  look.min_streak_coverage = 0.0;
+  look.camera.look_at = {0.0, 1.6, 15.0};
+  const FrameValues pinhole = build_frame_values(frame, look);
+  look.aperture_m = 0.02;
+  look.focal_blur = FocalBlur::rain;
+  const FrameValues rain = build_frame_values(frame, look);
+  look.focal_blur = FocalBlur::traced;  // POV-Ray blurs the quads itself
+  const FrameValues traced = build_frame_values(frame, look);
+  ASSERT_EQ(pinhole.streaks.size(), 2u);
+  ASSERT_EQ(rain.streaks.size(), 2u);
+  ASSERT_EQ(traced.streaks.size(), 2u);
+  EXPECT_EQ(rain.streaks[0].corners, pinhole.streaks[0].corners);  // in focus
+  EXPECT_EQ(rain.streaks[0].cell, pinhole.streaks[0].cell);
+  EXPECT_NE(rain.streaks[1].corners, pinhole.streaks[1].corners);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(traced.streaks[i].corners, pinhole.streaks[i].corners) << i;
+    EXPECT_EQ(traced.streaks[i].cell, pinhole.streaks[i].cell) << i;
+  }
+}
+
+TEST(FrameValues, ANearDropOutOfFocusIsTheLenssDiscNotASphere) {
+  // A still 4 mm drop 1 m away at 1920 px (a pixel 0.6 mm) is a refractive sphere. Focused
+  // 20 m away with a 20 mm opening, its blur disc is 0.02·19/20 = 19 mm, 32 pixels: POV-Ray's
+  // sharp sphere would be wrong, so it is drawn as its blurred streak. Traced blur keeps the
+  // sphere (POV-Ray blurs it).
+  sim::Frame frame;
+  add_drop(frame, {0.0f, 1.6f, -4.0f}, {0.0f, -8.8f, 0.0f}, 4e-3f);
+  ExportParams look = default_look();
+  look.width = 1920;
+  look.height = 1080;
+  look.min_streak_coverage = 0.0;
+  look.camera.exposure_s = 0.0;
+  look.camera.look_at = {0.0, 1.6, 15.0};
+  look.aperture_m = 0.02;
+  look.focal_blur = FocalBlur::traced;
+  EXPECT_EQ(build_frame_values(frame, look).drops.size(), 1u);
+  look.focal_blur = FocalBlur::rain;
+  const FrameValues values = build_frame_values(frame, look);
+  EXPECT_TRUE(values.drops.empty());
+  ASSERT_EQ(values.streaks.size(), 1u);
+  EXPECT_NEAR(glm::length(values.streaks[0].corners[1] - values.streaks[0].corners[0]),
+              0.00434666 + 0.019, 1e-5);
 }
 
 TEST(FrameValues, StreakLengthFollowsExposureAndFacesTheCamera) {

@@ -206,6 +206,42 @@ TEST(PovRayRainLight, TheSameRainAddsTheSameLightAtEveryExposure) {
   EXPECT_LT(tolerance, 0.1);
 }
 
+TEST(PovRayRainLight, RainOutOfFocusAddsTheSameLightAsInFocus) {
+  SKIP_WITHOUT_POVRAY();
+  // The slab 2–4 m deep, a lens 5 cm open focused 20 m away, the rain alone blurred: every drop
+  // spreads over a disc of 0.05·(16…18)/20 = 40–45 mm, about four pixels at 320 px (a pixel is
+  // 10.8 mm at 3 m), so the sub-pixel streaks become resolved ones four times as wide and a
+  // sixteenth as opaque. Defocus moves light, it adds none.
+  ExportParams look = small_look(320, 180);
+  look.min_streak_coverage = 0.0;
+  look.camera.look_at = {0.0, 1.6, 15.0};
+  const std::vector<Drop> drops = rain_slab(3000, look);
+  Environment environment;
+  environment.backlight = true;
+  environment.surround = 0.02;
+  const Renders sharp = render("focus_sharp", look, environment, drops);
+  look.aperture_m = 0.05;
+  look.focal_blur = FocalBlur::rain;
+  const Renders blurred = render("focus_blurred", look, environment, drops);
+  const double a = added_light(sharp);
+  const double b = added_light(blurred);
+  ASSERT_GT(a, 0.0);
+  // The blur does show: it touches more pixels.
+  EXPECT_GT(touched_pixels(blurred), 2 * touched_pixels(sharp));
+  // Tolerance as for the exposures (pixel sampling and atlas rounding, three σ), plus the
+  // light of the streaks within two pixels of the left and right edges, half of which the
+  // wider streaks carry out of the picture: 2·2/320 of the drops, at most half each, 0.7 %.
+  const double n = static_cast<double>(drops.size());
+  const double sampling = std::sqrt(1.0 / static_cast<double>(touched_pixels(sharp)) +
+                                    1.0 / static_cast<double>(touched_pixels(blurred)));
+  const double rounding = 0.025 * std::sqrt(2.0 / n);
+  const double tolerance = 0.001 + 0.007 + 3.0 * std::hypot(sampling, rounding);
+  EXPECT_NEAR(b / a, 1.0, tolerance) << "added light " << a << " sharp, " << b << " blurred";
+  ::testing::Test::RecordProperty("ratio", std::to_string(b / a));
+  ::testing::Test::RecordProperty("tolerance", std::to_string(tolerance));
+  EXPECT_LT(tolerance, 0.1);
+}
+
 TEST(PovRayRainLight, RainWithNoLightIsInvisible) {
   SKIP_WITHOUT_POVRAY();
   // Black surroundings, no light, no RT_RainSurround: streaks, and refractive spheres (exposure

@@ -60,7 +60,7 @@ std::string fog_text(const FogParams& fog, const sim::Camera& camera) {
 // |pixel − its 5×5 mean| 5.9 % of the level, 3.3 % now, for 2.1× the frame's CPU; BENCHMARKS.md,
 // "Focal blur"). Preview takes fewer: grainier discs, the same picture.
 std::string focal_blur_text(const ExportParams& look) {
-  if (!(look.aperture_m > 0.0)) return {};
+  if (!traces_focal_blur(look)) return {};
   const bool preview = look.quality == Quality::preview;
   return " aperture " + format_number(2.0 * look.aperture_m) + " blur_samples " +
          (preview ? "4,16" : "16,256") + " focal_point " + vec(look.camera.look_at) +
@@ -259,7 +259,7 @@ std::string ini_text(const ExportParams& look, int frame_count, const char* pref
   const std::string last_frame(static_cast<std::size_t>(digits), '9');
   // Focal blur already shoots up to 128 rays through each pixel; antialiasing on top would
   // multiply them again for edges the blur has already softened (POV-Ray's own advice).
-  const bool antialias = look.quality == Quality::final && p == "frame" && !(look.aperture_m > 0.0);
+  const bool antialias = look.quality == Quality::final && p == "frame" && !traces_focal_blur(look);
   std::string text;
   text += "; raintrace: run `povray " + std::string{p == "frame" ? "scene" : "mask"} +
           ".ini` inside this folder to render the animation.\n";

@@ -93,6 +93,12 @@ TEST(SceneFiles, ApertureFocusesOnLookAtAndReplacesAntialiasing) {
   look.quality = Quality::preview;
   EXPECT_TRUE(contains(scene_inc_text(look), " blur_samples 4,16 "));
   EXPECT_TRUE(contains(scene_inc_text(look), " variance 1/2000"));
+  // Blurring the rain alone is povgen's (frame_values.h): POV-Ray's camera stays a pinhole.
+  look.focal_blur = FocalBlur::rain;
+  look.quality = Quality::final;
+  EXPECT_FALSE(contains(scene_inc_text(look), "aperture"));
+  EXPECT_TRUE(contains(ini_text(look, 1, "frame", "scene.pov", {1, 1}), "\nAntialias=on\n"));
+  look.focal_blur = FocalBlur::traced;
   look.aperture_m = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(scene_inc_text(look), std::invalid_argument);
   look.aperture_m = 2.0;
