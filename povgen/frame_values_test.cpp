@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "povgen/drop_shape.h"
+#include "povgen/test_support/atlas_texels.h"
 #include "povgen/test_support/synthetic_rain.h"
 #include "povgen/view_frustum.h"
 
@@ -31,6 +32,22 @@ void add_drop(sim::Frame& frame, glm::vec3 position, glm::vec3 velocity, float d
   d.vanishing_rate.push_back(0.0f);
   d.opacity.push_back(1.0f);
   d.colour.push_back(glm::vec3{1.0f});
+}
+
+/// A 4 mm drop 1 m in front of the default eye, falling at 8.8 m/s.
+sim::Frame big_drop_one_metre_away() {
+  sim::Frame frame;
+  add_drop(frame, {0.0f, 1.6f, -4.0f}, {0.0f, -8.8f, 0.0f}, 4e-3f);
+  return frame;
+}
+
+/// The default look at 1920×1080 (a pixel 0.6 mm at 1 m), every streak kept at its own opacity.
+ExportParams full_hd_look_keeping_every_streak() {
+  ExportParams look = default_look();
+  look.width = 1920;
+  look.height = 1080;
+  look.min_streak_coverage = 0.0;
+  return look;
 }
 
 TEST(ViewFrustum, CullsAtTheEdgeOfTheFieldOfView) {
@@ -111,12 +128,8 @@ TEST(FrameValues, LargeNearDropsAreFlattenedAtEqualVolume) {
 TEST(FrameValues, NearDropsShowTheirMotionDuringTheExposure) {
   // A 4 mm drop 1 m from the eye at 1920 px (a pixel 0.6 mm): Beard-Chuang axis ratio 0.77932,
   // 2a = 4.34666 mm, height 2b = 3.38742 mm.
-  sim::Frame frame;
-  add_drop(frame, {0.0f, 1.6f, -4.0f}, {0.0f, -8.8f, 0.0f}, 4e-3f);
-  ExportParams look = default_look();
-  look.width = 1920;
-  look.height = 1080;
-  look.min_streak_coverage = 0.0;
+  const sim::Frame frame = big_drop_one_metre_away();
+  ExportParams look = full_hd_look_keeping_every_streak();
   // exposure_s = 0: the drop as it is, a sharp refractive sphere.
   look.camera.exposure_s = 0.0;
   FrameValues values = build_frame_values(frame, look);
@@ -160,19 +173,8 @@ TEST(FrameValues, SubPixelNearDropsBecomeStreaks) {
 double carried_coverage(const StreakValue& streak) {
   static const StreakAtlasLayout atlas;
   static const std::vector<std::uint16_t> px = streak_atlas_pixels(atlas);
-  const int row = streak.cell / atlas.columns();
-  const int column = streak.cell % atlas.columns();
-  double sum = 0.0;
-  for (int cy = 0; cy < atlas.cell_height; ++cy) {
-    const double wy = (cy == 0 || cy == atlas.cell_height - 1) ? 0.5 : 1.0;
-    for (int cx = 0; cx < atlas.cell_width; ++cx) {
-      const double wx = (cx == 0 || cx == atlas.cell_width - 1) ? 0.5 : 1.0;
-      const int x = column * atlas.cell_width + cx;
-      const int y = atlas.height() - 1 - (row * atlas.cell_height + cy);
-      sum += wx * wy * px[(static_cast<std::size_t>(y) * atlas.width() + x) * 2 + 1] / 65535.0;
-    }
-  }
-  const double mean = sum / ((atlas.cell_width - 1) * (atlas.cell_height - 1));
+  const double mean = test_support::atlas_cell_mean(px, atlas, streak.cell / atlas.columns(),
+                                                    streak.cell % atlas.columns());
   const auto& c = streak.corners;
   return mean * glm::length(c[3] - c[0]) * glm::length(c[1] - c[0]);
 }
@@ -237,12 +239,8 @@ TEST(FrameValues, ANearDropOutOfFocusIsTheLenssDiscNotASphere) {
   // 20 m away with a 20 mm opening, its blur disc is 0.02·19/20 = 19 mm, 32 pixels: POV-Ray's
   // sharp sphere would be wrong, so it is drawn as its blurred streak. Traced blur keeps the
   // sphere (POV-Ray blurs it).
-  sim::Frame frame;
-  add_drop(frame, {0.0f, 1.6f, -4.0f}, {0.0f, -8.8f, 0.0f}, 4e-3f);
-  ExportParams look = default_look();
-  look.width = 1920;
-  look.height = 1080;
-  look.min_streak_coverage = 0.0;
+  const sim::Frame frame = big_drop_one_metre_away();
+  ExportParams look = full_hd_look_keeping_every_streak();
   look.camera.exposure_s = 0.0;
   look.camera.look_at = {0.0, 1.6, 15.0};
   look.aperture_m = 0.02;

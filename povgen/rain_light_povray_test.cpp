@@ -133,6 +133,20 @@ std::size_t touched_pixels(const Renders& r, double threshold = 1e-6) {
   return n;
 }
 
+/// How far apart the light two renders of the same `streaks` rain add may lie. Without
+/// antialiasing each streak is sampled at pixel centres: the light it adds is its area in
+/// pixels ± about one pixel per row it crosses, independently for each streak, so the relative
+/// error of the sum is about 1/√(pixels touched) per render; the atlas rows round each streak's
+/// opacity to within 2^(±1/16) (4.4 %), spread as a uniform error of σ 2.5 % that averages to
+/// 2.5 %/√N over N streaks, and biased by +0.1 % (the mean of 2^δ). Three σ of both renders and
+/// the bias.
+double same_light_tolerance(const Renders& a, const Renders& b, std::size_t streaks) {
+  const double sampling = std::sqrt(1.0 / static_cast<double>(touched_pixels(a)) +
+                                    1.0 / static_cast<double>(touched_pixels(b)));
+  const double rounding = 0.025 * std::sqrt(2.0 / static_cast<double>(streaks));
+  return 0.001 + 3.0 * std::hypot(sampling, rounding);
+}
+
 ExportParams small_look(int width, int height) {
   ExportParams look;
   look.width = width;
@@ -188,17 +202,7 @@ TEST(PovRayRainLight, TheSameRainAddsTheSameLightAtEveryExposure) {
   const double a = added_light(short_exposure);
   const double b = added_light(long_exposure);
   ASSERT_GT(a, 0.0);
-  // Tolerance. Without antialiasing each streak is sampled at pixel centres: the light it adds
-  // is its area in pixels ± about one pixel per row it crosses, independently for each
-  // streak, so the relative error of the sum is about 1/√(pixels touched) per render; the
-  // atlas rows round each streak's opacity to within 2^(±1/16) (4.4 %), spread as a uniform
-  // error of σ 2.5 % that averages to 2.5 %/√N over N streaks, and biased by +0.1 % (the mean
-  // of 2^δ). Three σ of both renders and the bias:
-  const double n = static_cast<double>(drops.size());
-  const double sampling = std::sqrt(1.0 / static_cast<double>(touched_pixels(short_exposure)) +
-                                    1.0 / static_cast<double>(touched_pixels(long_exposure)));
-  const double rounding = 0.025 * std::sqrt(2.0 / n);
-  const double tolerance = 0.001 + 3.0 * std::hypot(sampling, rounding);
+  const double tolerance = same_light_tolerance(short_exposure, long_exposure, drops.size());
   EXPECT_NEAR(b / a, 1.0, tolerance) << "added light " << a << " at 0.01 s, " << b << " at 0.04 s";
   ::testing::Test::RecordProperty("ratio", std::to_string(b / a));
   ::testing::Test::RecordProperty("tolerance", std::to_string(tolerance));
@@ -228,14 +232,9 @@ TEST(PovRayRainLight, RainOutOfFocusAddsTheSameLightAsInFocus) {
   ASSERT_GT(a, 0.0);
   // The blur does show: it touches more pixels.
   EXPECT_GT(touched_pixels(blurred), 2 * touched_pixels(sharp));
-  // Tolerance as for the exposures (pixel sampling and atlas rounding, three σ), plus the
-  // light of the streaks within two pixels of the left and right edges, half of which the
-  // wider streaks carry out of the picture: 2·2/320 of the drops, at most half each, 0.7 %.
-  const double n = static_cast<double>(drops.size());
-  const double sampling = std::sqrt(1.0 / static_cast<double>(touched_pixels(sharp)) +
-                                    1.0 / static_cast<double>(touched_pixels(blurred)));
-  const double rounding = 0.025 * std::sqrt(2.0 / n);
-  const double tolerance = 0.001 + 0.007 + 3.0 * std::hypot(sampling, rounding);
+  // Plus the light of the streaks within two pixels of the left and right edges, half of which
+  // the wider streaks carry out of the picture: 2·2/320 of the drops, at most half each, 0.7 %.
+  const double tolerance = 0.007 + same_light_tolerance(sharp, blurred, drops.size());
   EXPECT_NEAR(b / a, 1.0, tolerance) << "added light " << a << " sharp, " << b << " blurred";
   ::testing::Test::RecordProperty("ratio", std::to_string(b / a));
   ::testing::Test::RecordProperty("tolerance", std::to_string(tolerance));

@@ -10,31 +10,13 @@
 #include <numbers>
 #include <random>
 
+#include "povgen/test_support/atlas_texels.h"
+
 namespace raintrace::povgen {
 namespace {
 
-/// Alpha (0..1) of a texel of cell (row, column), texel (cx, cy) with cy = 0 the cell's bottom.
-double alpha_at(const std::vector<std::uint16_t>& px, const StreakAtlasLayout& l, int row,
-                int column, int cx, int cy) {
-  const int x = column * l.cell_width + cx;
-  const int y = l.height() - 1 - (row * l.cell_height + cy);
-  return px[(static_cast<std::size_t>(y) * l.width() + x) * 2 + 1] / 65535.0;
-}
-
-/// Mean of a cell as POV-Ray's bilinear filter spreads it over a quad whose corners sit on the
-/// centres of the cell's corner texels: the trapezoid rule over the texels.
-double cell_mean(const std::vector<std::uint16_t>& px, const StreakAtlasLayout& l, int row,
-                 int column) {
-  double sum = 0.0;
-  for (int cy = 0; cy < l.cell_height; ++cy) {
-    const double wy = (cy == 0 || cy == l.cell_height - 1) ? 0.5 : 1.0;
-    for (int cx = 0; cx < l.cell_width; ++cx) {
-      const double wx = (cx == 0 || cx == l.cell_width - 1) ? 0.5 : 1.0;
-      sum += wx * wy * alpha_at(px, l, row, column, cx, cy);
-    }
-  }
-  return sum / ((l.cell_width - 1) * (l.cell_height - 1));
-}
+using test_support::atlas_alpha_at;
+using test_support::atlas_cell_mean;
 
 TEST(StreakAtlas, RowsScaleTheOpacityByAnEighthOfAHalving) {
   const StreakAtlasLayout layout;
@@ -45,11 +27,11 @@ TEST(StreakAtlas, RowsScaleTheOpacityByAnEighthOfAHalving) {
   // Every cell is its column's profile times its row's opacity (to 16-bit rounding).
   const int long_column = layout.motions - 1;
   const double top =
-      alpha_at(px, layout, 0, long_column, layout.cell_width / 2, layout.cell_height / 2);
+      atlas_alpha_at(px, layout, 0, long_column, layout.cell_width / 2, layout.cell_height / 2);
   EXPECT_GT(top, 0.95);
   for (const int row : {3, 8, 40, 96}) {
     EXPECT_NEAR(
-        alpha_at(px, layout, row, long_column, layout.cell_width / 2, layout.cell_height / 2),
+        atlas_alpha_at(px, layout, row, long_column, layout.cell_width / 2, layout.cell_height / 2),
         top * layout.row_opacity(row), 0.6 / 65535.0)
         << row;
   }
@@ -68,7 +50,7 @@ TEST(StreakAtlas, EveryColumnCarriesTheDropsAreaOfCoverage) {
   for (int column = 0; column < layout.columns(); ++column) {
     const double motion = streak_atlas_motion(layout, column % layout.motions);
     const double middle = motion > 1.0 ? 1.0 / motion : 1.0;
-    EXPECT_NEAR(cell_mean(px, layout, 0, column) * streak_atlas_column_gain(layout, column) *
+    EXPECT_NEAR(atlas_cell_mean(px, layout, 0, column) * streak_atlas_column_gain(layout, column) *
                     middle * (1.0 + motion),
                 std::numbers::pi / 4, 0.001)
         << "column " << column << ", motion " << motion;
@@ -84,16 +66,16 @@ TEST(StreakAtlas, ResolvedStreaksShowTheDropsOutlineSubPixelOnesAreFlatAcross) {
   // Motion 2: resolved is clear at its rim, full on its axis.
   const int resolved = 3;  // motion 2
   EXPECT_NEAR(streak_atlas_motion(layout, resolved), 2.0, 0.0);
-  EXPECT_GT(alpha_at(px, layout, 0, resolved, layout.cell_width / 2, middle), 0.9);
-  EXPECT_LT(alpha_at(px, layout, 0, resolved, 0, middle), 0.5);
+  EXPECT_GT(atlas_alpha_at(px, layout, 0, resolved, layout.cell_width / 2, middle), 0.9);
+  EXPECT_LT(atlas_alpha_at(px, layout, 0, resolved, 0, middle), 0.5);
   // Sub-pixel: the same across the cell, its peak in the middle of the streak.
   const int sub_pixel = resolved + layout.motions;
-  const double centre = alpha_at(px, layout, 0, sub_pixel, layout.cell_width / 2, middle);
+  const double centre = atlas_alpha_at(px, layout, 0, sub_pixel, layout.cell_width / 2, middle);
   EXPECT_NEAR(centre, 1.0, 1e-4);
-  EXPECT_NEAR(alpha_at(px, layout, 0, sub_pixel, 0, middle), centre, 1e-9);
+  EXPECT_NEAR(atlas_alpha_at(px, layout, 0, sub_pixel, 0, middle), centre, 1e-9);
   // Both end clear: nothing is drawn before the drop arrives or after it has gone.
-  EXPECT_LT(alpha_at(px, layout, 0, sub_pixel, 0, 0), 0.05);
-  EXPECT_LT(alpha_at(px, layout, 0, sub_pixel, 0, layout.cell_height - 1), 0.05);
+  EXPECT_LT(atlas_alpha_at(px, layout, 0, sub_pixel, 0, 0), 0.05);
+  EXPECT_LT(atlas_alpha_at(px, layout, 0, sub_pixel, 0, layout.cell_height - 1), 0.05);
 }
 
 TEST(StreakAtlas, CellLookup) {
@@ -155,7 +137,8 @@ TEST(StreakAtlas, AStreakBetweenTwoColumnsStillCarriesTheDropsArea) {
       const int cell = streak_atlas_cell(layout, m, footprint, middle);
       ASSERT_GE(cell, 0);
       const double carried =
-          cell_mean(px, layout, cell / layout.columns(), cell % layout.columns()) * (1.0 + m) / 0.1;
+          atlas_cell_mean(px, layout, cell / layout.columns(), cell % layout.columns()) *
+          (1.0 + m) / 0.1;
       EXPECT_NEAR(carried / (std::numbers::pi / 4), 1.0, 0.045) << "motion " << m;
     }
   }
