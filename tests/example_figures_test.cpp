@@ -455,9 +455,8 @@ int isolated_glints(const Image& image, int x0, int x1, int y0, int y1, float by
   int count = 0;
   for (int y = y0; y < y1; ++y) {
     for (int x = x0; x < x1; ++x) {
-      const float brightest_neighbour =
-          std::max({image.luma(x - 1, y), image.luma(x + 1, y), image.luma(x, y - 1),
-                    image.luma(x, y + 1)});
+      const float brightest_neighbour = std::max(
+          {image.luma(x - 1, y), image.luma(x + 1, y), image.luma(x, y - 1), image.luma(x, y + 1)});
       const float luma = image.luma(x, y);
       if (luma > 1.5f * brightest_neighbour && luma > brightest_neighbour + by) ++count;
     }
@@ -477,9 +476,8 @@ int isolated_glints(const Image& image, int x0, int x1, int y0, int y1, float by
 // Most of those left are on the puddles by the right kerb, where the rings are drawn.
 TEST(ExampleFigures, DefaultStreetRoadImagesBreakIntoPatchesNotGlints) {
   if (!have_povray()) GTEST_SKIP() << "povray is not installed";
-  const auto [resolved, true_scale] =
-      render_default_twice("default_glints", 640, "Declare=RT_Preview=0 +A0.15 +R3",
-                           "Declare=RT_NoiseSpans=0");
+  const auto [resolved, true_scale] = render_default_twice(
+      "default_glints", 640, "Declare=RT_Preview=0 +A0.15 +R3", "Declare=RT_NoiseSpans=0");
   ASSERT_EQ(resolved.width, 640);
   ASSERT_EQ(resolved.rgb.size(), true_scale.rgb.size());
   const int glints = isolated_glints(resolved, 200, 440, 200, 359, 0.02f);
