@@ -473,7 +473,8 @@ int isolated_glints(const Image& image, int x0, int x1, int y0, int y1, float by
 // images (x 200–440, y 200–359 of 640×360) the resolved ground must show under a third of the
 // true scale's isolated glints, and fewer than 120. Measured: 92 resolved, 455 at the true scale;
 // on the template before (the aggregate was POV-Ray's granite normal at its true scale), 143.
-// Most of those left are on the puddles by the right kerb, where the rings are drawn.
+// The largest cluster of those left (21) is on the puddles by the right kerb, where the rings
+// are drawn.
 TEST(ExampleFigures, DefaultStreetRoadImagesBreakIntoPatchesNotGlints) {
   if (!have_povray()) GTEST_SKIP() << "povray is not installed";
   const auto [resolved, true_scale] = render_default_twice(
