@@ -28,6 +28,7 @@
 #include "cli/scene_include.h"
 #include "cli/scene_reader.h"
 #include "cli/scene_tables.h"
+#include "povgen/environment_lamps.h"
 
 namespace raintrace::cli {
 namespace {
@@ -181,6 +182,9 @@ Scene load_scene_string(std::string_view toml_text, const std::string& source_na
   scene.look.camera = scene.sim.camera;
   scene.look.rain = scene.sim.rain;
   resolve_ground(scene);
+  if (scene.look.environment.include_path.empty()) {
+    scene.sim.lamps = povgen::environment_lamps(scene.look.environment.name);
+  }
   return scene;
 }
 

@@ -271,10 +271,11 @@ TEST(SceneErrors, UnknownTopLevelKey) {
 }
 
 TEST(SceneErrors, NestedTableInASectionIsAnUnknownKey) {
-  EXPECT_EQ(error_of("[rain.extra]\nx = 1\n"),
-            "t.toml:1:7: rain.extra: unknown key (known keys of [rain]: rate_mm_per_h, "
-            "distribution, diameter_min_mm, diameter_max_mm, near_m, far_m, ceiling_margin_m, "
-            "merging, breakup_diameter_mm, vanishing_rate_per_s, colour)");
+  EXPECT_EQ(
+      error_of("[rain.extra]\nx = 1\n"),
+      "t.toml:1:7: rain.extra: unknown key (known keys of [rain]: rate_mm_per_h, "
+      "distribution, diameter_min_mm, diameter_max_mm, near_m, far_m, ceiling_margin_m, "
+      "merging, breakup_diameter_mm, vanishing_rate_per_s, colour, lamp_reach_m, lamp_far_m)");
 }
 
 TEST(SceneErrors, WrongTypes) {

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <vector>
 
+#include "sim/lamp_rain.h"
 #include "sim/world.h"
 
 namespace raintrace::output {
@@ -64,9 +65,10 @@ double default_max_memory_bytes() {
 
 Budget estimate_budget(const SceneToExport& scene, FrameSpan range, int povray_processes) {
   const sim::WorkEstimate work = sim::World::estimate(scene.sim);
+  const sim::WorkEstimate lamps = sim::LampRain::estimate(scene.sim);
   Budget b;
-  b.drops = work.drops;
-  b.drops_in_view = work.drops_in_view;
+  b.drops = work.drops + lamps.drops;
+  b.drops_in_view = work.drops_in_view + lamps.drops_in_view;
   b.substeps = work.steps_until((range.last - 1) / scene.look.fps, scene.sim.substep_s);
   b.drop_steps = b.drops * b.substeps;
   b.simulation_bytes = kSimulationBase + kSimulationPerDrop * b.drops;
@@ -89,7 +91,8 @@ void check_budget(const Budget& b, const BudgetLimits& limits) {
         "this scene asks for {} drop-steps of simulation ({} drops × {} substeps up to the "
         "last frame), about {} at {} drop-steps/s, more than the limit of {}: raise "
         "[simulation] substep_s or [output] fps, lower [output] frames (or --frames) or "
-        "[simulation] prewarm_s, or lower [rain] rate_mm_per_h or far_m; or raise the limit "
+        "[simulation] prewarm_s, or lower [rain] rate_mm_per_h, far_m or lamp_reach_m; or raise "
+        "the limit "
         "with --max-drop-steps {}",
         human_count(b.drop_steps), human_count(b.drops), human_count(b.substeps),
         human_duration(b.drop_steps / kDropStepsPerSecond), human_count(kDropStepsPerSecond),

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "sim/lamp_rain.h"
+
 namespace raintrace::output {
 namespace {
 
@@ -52,6 +54,18 @@ TEST(Budget, MemoryFollowsTheMeasuredModel) {
   EXPECT_EQ(b.total_bytes(), b.simulation_bytes);  // export only: no POV-Ray
   const Budget rendering = estimate_budget(scene(500, 6), {1, 1}, 4);
   EXPECT_DOUBLE_EQ(rendering.total_bytes(), b.simulation_bytes + 4 * rendering.povray_bytes);
+}
+
+TEST(Budget, CountsTheDropsSimulatedAroundTheLampsInView) {
+  SceneToExport s = scene(5, 6);
+  const Budget without = estimate_budget(s, {1, 1}, 0);
+  s.sim.lamps = {{1.0, 4.0, 15.0}};  // ahead of the default camera, in view
+  s.sim.rain.lamp_reach_m = 3.0;
+  const Budget with = estimate_budget(s, {1, 1}, 0);
+  const double lamp_drops = sim::LampRain::estimate(s.sim).drops;
+  EXPECT_GT(lamp_drops, 0.0);
+  EXPECT_DOUBLE_EQ(with.drops, without.drops + lamp_drops);
+  EXPECT_GT(with.simulation_bytes, without.simulation_bytes);
 }
 
 TEST(Budget, AFrameRateOfAlmostNothingIsRefusedForItsWork) {

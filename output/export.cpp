@@ -13,6 +13,7 @@
 #include "povgen/frame_values.h"
 #include "povgen/output_folder.h"
 #include "povgen/scene_files.h"
+#include "sim/lamp_rain.h"
 #include "sim/world.h"
 
 namespace raintrace::output {
@@ -87,12 +88,15 @@ bool export_frames(FolderState& folder, const SceneToExport& scene, FrameSpan ra
   int n = 1;
   try {
     sim::World world(scene.sim, hooks.stop);
+    sim::LampRain lamp_rain(scene.sim, hooks.stop);
     for (; n <= range.last && !stopped(); ++n) {
       // Frame n shows the world at (n − 1)/fps: the state depends on every earlier frame, so
       // frames before the range are simulated but not written.
       world.advance_to((n - 1) / look.fps);
+      lamp_rain.advance_to((n - 1) / look.fps);
       if (n < range.first) continue;
-      const sim::Frame frame = world.snapshot(n);
+      sim::Frame frame = world.snapshot(n);
+      lamp_rain.add_drops(n, frame.drops);
       const std::string name = frame_scene_name(Pass::image, n, digits);
       povgen::build_frame_values(frame, look, values, povgen::StreakAtlasLayout{}, threads);
       // Everything POV-Ray reads for this frame: the shared files (scene.inc, includes, atlas,

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <string_view>
+#include <vector>
 
 #include "sim/camera.h"
 #include "sim/param_table.h"
@@ -44,6 +45,11 @@ struct RainParams {
   double vanishing_rate_per_s = 0.0;
   /// Linear RGB tint of the water.
   glm::dvec3 colour{0.9, 0.95, 1.0};
+  /// Beyond far_m, drops are also simulated and drawn within this distance of each lamp of the
+  /// environment in view (sim/lamp_rain.h), where the lamp lights them; 0: none.
+  double lamp_reach_m = 0.0;
+  /// Lamps farther than this from the camera get none (their rain is too fine to show).
+  double lamp_far_m = 30.0;
 };
 
 /// [rain]
@@ -63,6 +69,8 @@ inline constexpr Param<RainParams> kRainParams[] = {
     number("rain", "vanishing_rate_per_s", &RainParams::vanishing_rate_per_s, "1/s",
            Range::closed(0, 100)),
     colour("rain", "colour", &RainParams::colour),
+    number("rain", "lamp_reach_m", &RainParams::lamp_reach_m, "m", Range::closed(0, 20)),
+    number("rain", "lamp_far_m", &RainParams::lamp_far_m, "m", Range::closed(0, 200)),
 };
 static_assert(well_formed<RainParams>(kRainParams));
 
@@ -252,6 +260,9 @@ struct SimParams {
   int threads = 0;
   /// Seed of every random stream.
   std::uint64_t seed = 1;
+  /// Where the environment's lamps are (their lenses, m), for rain.lamp_reach_m. Set by cli from
+  /// the environment, not a scene-file key.
+  std::vector<glm::dvec3> lamps;
 };
 
 /// The top-level `seed` and [simulation]; the other sections have their own tables above.

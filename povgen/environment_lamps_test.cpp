@@ -1,0 +1,52 @@
+// The lamp table the rain uses against the template that draws the lamps.
+#include "povgen/environment_lamps.h"
+
+#include <gtest/gtest.h>
+
+#include <regex>
+#include <string>
+
+#include "povgen/templates.h"
+
+namespace raintrace::povgen {
+namespace {
+
+double declared(const std::string& text, const std::string& name) {
+  const std::regex pattern("#declare " + name + R"( = ([0-9.]+);)");
+  std::smatch match;
+  if (!std::regex_search(text, match, pattern)) ADD_FAILURE() << name << " not declared";
+  return std::stod(match[1].str());
+}
+
+TEST(EnvironmentLamps, NightStreetsTableIsWhereTheTemplateDrawsItsLights) {
+  const std::string& text = environment_template("night_street");
+  const double kerb = declared(text, "RT_KerbX");
+  const double height = declared(text, "RT_LampHeight");
+  // The lens as RT_StreetLight places it.
+  ASSERT_NE(text.find("#local Lens = <Side * (RT_KerbX - 1.3), RT_LampHeight - 0.12, Z>;"),
+            std::string::npos);
+  std::vector<glm::dvec3> drawn;
+  const std::regex call(R"(\nRT_StreetLight\((-?[0-9.]+), (-?1), )");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), call); it != std::sregex_iterator();
+       ++it) {
+    const double z = std::stod((*it)[1].str());
+    const double side = std::stod((*it)[2].str());
+    drawn.emplace_back(side * (kerb - 1.3), height - 0.12, z);
+  }
+  const std::vector<glm::dvec3> table = environment_lamps("night_street");
+  ASSERT_EQ(table.size(), drawn.size());
+  ASSERT_GE(table.size(), 5u);
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    EXPECT_NEAR(table[i].x, drawn[i].x, 1e-9) << i;
+    EXPECT_NEAR(table[i].y, drawn[i].y, 1e-9) << i;
+    EXPECT_NEAR(table[i].z, drawn[i].z, 1e-9) << i;
+  }
+}
+
+TEST(EnvironmentLamps, OtherEnvironmentsHaveNone) {
+  EXPECT_TRUE(environment_lamps("field").empty());
+  EXPECT_TRUE(environment_lamps("closeup").empty());
+}
+
+}  // namespace
+}  // namespace raintrace::povgen

@@ -1,0 +1,127 @@
+// Rain around the lamps in view: one narrow World per lamp (see lamp_rain.h).
+#include "sim/lamp_rain.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <numbers>
+
+#include "sim/random.h"
+
+namespace raintrace::sim {
+namespace {
+
+/// The scene's rain, seen from the same eye through a frustum just wide enough for the ball of
+/// radius reach_m around centre and no deeper than it, with nothing on the ground.
+SimParams lamp_params(const SimParams& scene, const glm::dvec3& centre, double distance_m,
+                      double reach_m, std::uint64_t lamp_number) {
+  SimParams p = scene;
+  p.camera.look_at = centre;
+  p.camera.fov_deg = 2.0 * std::asin(reach_m / distance_m) * 180.0 / std::numbers::pi;
+  p.camera.aspect = 1.0;
+  p.rain.near_m = std::max(scene.rain.far_m, distance_m - reach_m);
+  p.rain.far_m = distance_m + reach_m;
+  p.splashes.enabled = false;
+  p.ripples.enabled = false;
+  p.puddles.coverage = 0.0;
+  p.lightning.enabled = false;
+  // Merging changes a few drops in a thousand over a fall (a pass every 40 ms is most of a
+  // step's cost): for rain seen 15 m away and more, not worth it.
+  p.rain.merging = false;
+  p.seed = mix64(scene.seed ^ mix64(lamp_number));
+  return p;
+}
+
+/// Where the ball of drawn rain sits: reach_m/2 below the lens and reach_m/2 nearer the eye
+/// (across the ground). A street lamp lights the air below it, and of that air the camera sees
+/// lit from behind (a drop's bright forward lobe, sim/drop_optics.h) the part between it and the
+/// lamp; the rain beyond the lamp scatters its light backward, ~1/100 as bright.
+glm::dvec3 ball_centre(const glm::dvec3& lens, const glm::dvec3& eye, double reach_m) {
+  glm::dvec3 toward_eye = eye - lens;
+  toward_eye.y = 0.0;
+  const double across = glm::length(toward_eye);
+  const glm::dvec3 nearer = across > 0.0 ? toward_eye * (0.5 * reach_m / across) : glm::dvec3{};
+  return lens + nearer - glm::dvec3{0.0, 0.5 * reach_m, 0.0};
+}
+
+struct LampWorld {
+  glm::dvec3 centre;
+  SimParams params;
+};
+
+/// The lamps that take part and their Worlds' params, in the order of params.lamps.
+std::vector<LampWorld> lamp_worlds(const SimParams& params) {
+  std::vector<LampWorld> worlds;
+  const double reach = params.rain.lamp_reach_m;
+  if (reach <= 0.0 || params.lamps.empty()) return worlds;
+  const ViewVolume lamps_in_view(params.camera, params.rain.far_m,
+                                 std::max(params.rain.far_m, params.rain.lamp_far_m) + 1e-6);
+  for (const glm::dvec3& lens : params.lamps) {
+    if (!lamps_in_view.contains(lens)) continue;
+    const glm::dvec3 centre = ball_centre(lens, params.camera.position, reach);
+    const double distance = glm::length(centre - params.camera.position);
+    // Far enough that the ball leaves the eye out.
+    if (distance <= 2.0 * reach) continue;
+    const auto number = static_cast<std::uint64_t>(worlds.size() + 1);
+    worlds.push_back({centre, lamp_params(params, centre, distance, reach, number)});
+  }
+  return worlds;
+}
+
+}  // namespace
+
+LampRain::LampRain(const SimParams& params, const std::atomic<bool>* cancel)
+    : m_beyond(params.camera, params.rain.far_m,
+               std::max(params.rain.far_m, params.rain.lamp_far_m) +
+                   2.0 * std::max(params.rain.lamp_reach_m, 1e-3)),
+      m_reach_m(params.rain.lamp_reach_m) {
+  for (LampWorld& lamp : lamp_worlds(params)) {
+    m_lamps.push_back({lamp.centre, std::make_unique<World>(lamp.params, cancel)});
+  }
+}
+
+WorkEstimate LampRain::estimate(const SimParams& params) {
+  WorkEstimate sum;
+  for (const LampWorld& lamp : lamp_worlds(params)) {
+    const WorkEstimate one = World::estimate(lamp.params);
+    sum.drops += one.drops;
+    sum.drops_in_view += one.drops_in_view;
+    sum.prewarm_steps = std::max(sum.prewarm_steps, one.prewarm_steps);
+  }
+  return sum;
+}
+
+std::size_t LampRain::simulated_drops() const {
+  std::size_t n = 0;
+  for (const Lamp& lamp : m_lamps) n += lamp.world->drops().size();
+  return n;
+}
+
+void LampRain::advance_to(double t_s) {
+  for (Lamp& lamp : m_lamps) lamp.world->advance_to(t_s);
+}
+
+void LampRain::add_drops(int frame_index, Drops& drops) const {
+  const double reach2 = m_reach_m * m_reach_m;
+  for (std::size_t k = 0; k < m_lamps.size(); ++k) {
+    const Lamp& lamp = m_lamps[k];
+    const Drops& own = lamp.world->snapshot(frame_index).drops;
+    const std::uint64_t offset = (k + 1) * kIdStride;
+    for (std::size_t i = 0; i < own.size(); ++i) {
+      const glm::dvec3 p{own.position[i]};
+      const glm::dvec3 d = p - lamp.centre;
+      if (glm::dot(d, d) > reach2 || !m_beyond.contains(p)) continue;
+      drops.id.push_back(own.id[i] + offset);
+      drops.position.push_back(own.position[i]);
+      drops.velocity.push_back(own.velocity[i]);
+      drops.acceleration.push_back(own.acceleration[i]);
+      drops.diameter.push_back(own.diameter[i]);
+      drops.age.push_back(own.age[i]);
+      drops.vanishing_rate.push_back(own.vanishing_rate[i]);
+      drops.opacity.push_back(own.opacity[i]);
+      drops.colour.push_back(own.colour[i]);
+    }
+  }
+}
+
+}  // namespace raintrace::sim
