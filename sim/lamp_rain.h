@@ -4,10 +4,11 @@
 // otherwise a smooth medium, so those streaks need drops. Simulating the whole view out to a
 // lamp 22 m away costs ~50 times the default's 6 m of rain; LampRain simulates only the air
 // around each lamp: for each, its own World of the same rain (rate, sizes, wind, seed mixed
-// with the lamp's number), whose view is a narrow frustum from the camera just wide enough for
-// the ball of radius reach_m around the lamp, with nothing on the ground (no splashes, ripples,
-// puddles or lightning). Its drops inside that ball, inside the camera's view and beyond
-// far_m (where the main World's stop) join the frame's.
+// with the lamp's number, no merging), whose view is a narrow frustum from the camera just wide
+// enough for a ball of radius lamp_reach_m below and in front of the lamp (the air it lights
+// and backlights), with nothing on the ground (no splashes, ripples, puddles or lightning). Its
+// drops inside that ball, inside the camera's view and beyond far_m (where the main World's
+// stop) join the frame's.
 #pragma once
 
 #include <atomic>
