@@ -82,10 +82,15 @@ LampRain::LampRain(const SimParams& params, const std::atomic<bool>* cancel)
 
 WorkEstimate LampRain::estimate(const SimParams& params) {
   WorkEstimate sum;
+  const double reach = params.rain.lamp_reach_m;
+  const double ball_m3 = 4.0 / 3.0 * std::numbers::pi * reach * reach * reach;
   for (const LampWorld& lamp : lamp_worlds(params)) {
     const WorkEstimate one = World::estimate(lamp.params);
     sum.drops += one.drops;
-    sum.drops_in_view += one.drops_in_view;
+    // Of its frustum's drops, those in the ball (at most: part of it may lie out of view,
+    // before far_m or under the ground).
+    const ViewVolume frustum(lamp.params.camera, lamp.params.rain.near_m, lamp.params.rain.far_m);
+    sum.drops_in_view += one.drops_in_view * std::min(1.0, ball_m3 / frustum.volume_m3());
     sum.prewarm_steps = std::max(sum.prewarm_steps, one.prewarm_steps);
   }
   return sum;
