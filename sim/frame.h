@@ -22,6 +22,18 @@ struct Drops {
   std::vector<glm::vec3> colour;        ///< linear RGB tint
 
   [[nodiscard]] std::size_t size() const { return id.size(); }
+  /// Appends a copy of drop i of `from`, every field.
+  void append(const Drops& from, std::size_t i) {
+    id.push_back(from.id[i]);
+    position.push_back(from.position[i]);
+    velocity.push_back(from.velocity[i]);
+    acceleration.push_back(from.acceleration[i]);
+    diameter.push_back(from.diameter[i]);
+    age.push_back(from.age[i]);
+    vanishing_rate.push_back(from.vanishing_rate[i]);
+    opacity.push_back(from.opacity[i]);
+    colour.push_back(from.colour[i]);
+  }
 };
 
 /// Ring ripples spreading on standing water from one impact (sim/ripples.h draws them).

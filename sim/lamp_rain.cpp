@@ -116,15 +116,8 @@ void LampRain::add_drops(int frame_index, Drops& drops) const {
       const glm::dvec3 p{own.position[i]};
       const glm::dvec3 d = p - lamp.centre;
       if (glm::dot(d, d) > reach2 || !m_beyond.contains(p)) continue;
-      drops.id.push_back(own.id[i] + offset);
-      drops.position.push_back(own.position[i]);
-      drops.velocity.push_back(own.velocity[i]);
-      drops.acceleration.push_back(own.acceleration[i]);
-      drops.diameter.push_back(own.diameter[i]);
-      drops.age.push_back(own.age[i]);
-      drops.vanishing_rate.push_back(own.vanishing_rate[i]);
-      drops.opacity.push_back(own.opacity[i]);
-      drops.colour.push_back(own.colour[i]);
+      drops.append(own, i);
+      drops.id.back() += offset;
     }
   }
 }

@@ -418,15 +418,7 @@ Frame World::snapshot(int frame_index) const {
   const Drops& d = m_state.drops;
   for (std::size_t i = 0; i < d.size(); ++i) {
     if (!m_view.contains(glm::dvec3(d.position[i]))) continue;
-    f.drops.id.push_back(d.id[i]);
-    f.drops.position.push_back(d.position[i]);
-    f.drops.velocity.push_back(d.velocity[i]);
-    f.drops.acceleration.push_back(d.acceleration[i]);
-    f.drops.diameter.push_back(d.diameter[i]);
-    f.drops.age.push_back(d.age[i]);
-    f.drops.vanishing_rate.push_back(d.vanishing_rate[i]);
-    f.drops.opacity.push_back(d.opacity[i]);
-    f.drops.colour.push_back(d.colour[i]);
+    f.drops.append(d, i);
   }
   add_ground_effects(f);
   // A frame records the light of its exposure: the shutter is open from time_s for
