@@ -92,8 +92,7 @@ void check_budget(const Budget& b, const BudgetLimits& limits) {
         "last frame), about {} at {} drop-steps/s, more than the limit of {}: raise "
         "[simulation] substep_s or [output] fps, lower [output] frames (or --frames) or "
         "[simulation] prewarm_s, or lower [rain] rate_mm_per_h, far_m or lamp_reach_m; or raise "
-        "the limit "
-        "with --max-drop-steps {}",
+        "the limit with --max-drop-steps {}",
         human_count(b.drop_steps), human_count(b.drops), human_count(b.substeps),
         human_duration(b.drop_steps / kDropStepsPerSecond), human_count(kDropStepsPerSecond),
         human_count(limits.max_drop_steps), option_number(b.drop_steps * 1.5)));
