@@ -73,13 +73,18 @@ fs::path work_dir(const std::string& name) {
   return dir;
 }
 
-// `raintrace export EXAMPLE -o DIR --frames RANGE`; its log beside DIR.
-void export_example(const std::string& example, const fs::path& dir, const std::string& frames) {
+// `raintrace export SCENE -o DIR --frames RANGE`; its log beside DIR.
+void export_scene(const fs::path& scene, const fs::path& dir, const std::string& frames) {
   const fs::path log = dir.string() + ".export.log";
-  const std::string command = std::string{RAINTRACE_EXE} + " export '" + RAINTRACE_SOURCE_DIR +
-                              "/examples/" + example + ".toml' -o '" + dir.string() +
-                              "' --frames " + frames + " >'" + log.string() + "' 2>&1";
+  const std::string command = std::string{RAINTRACE_EXE} + " export '" + scene.string() + "' -o '" +
+                              dir.string() + "' --frames " + frames + " >'" + log.string() +
+                              "' 2>&1";
   ASSERT_EQ(std::system(command.c_str()), 0) << read_text(log);
+}
+
+// The same for examples/EXAMPLE.toml.
+void export_example(const std::string& example, const fs::path& dir, const std::string& frames) {
+  export_scene(fs::path{RAINTRACE_SOURCE_DIR} / "examples" / (example + ".toml"), dir, frames);
 }
 
 // Renders one scene file of the folder (path relative to it) into images/NAME.png, 16:9 like
@@ -507,11 +512,7 @@ void export_default_with(const std::string& key, const std::string& line, const 
   ASSERT_EQ(replaced, 1) << key << " is not one line of examples/default.toml";
   const fs::path scene = dir.string() + ".toml";
   std::ofstream(scene) << changed.str();
-  const fs::path log = dir.string() + ".export.log";
-  const std::string command = std::string{RAINTRACE_EXE} + " export '" + scene.string() + "' -o '" +
-                              dir.string() + "' --frames " + frames + " >'" + log.string() +
-                              "' 2>&1";
-  ASSERT_EQ(std::system(command.c_str()), 0) << read_text(log);
+  export_scene(scene, dir, frames);
 }
 
 // Fine vertical structure in a rectangle: the mean of |L(x) − (L(x − 1) + L(x + 1))/2| along
