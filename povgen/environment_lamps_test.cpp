@@ -14,7 +14,10 @@ namespace {
 double declared(const std::string& text, const std::string& name) {
   const std::regex pattern("#declare " + name + R"( = ([0-9.]+);)");
   std::smatch match;
-  if (!std::regex_search(text, match, pattern)) ADD_FAILURE() << name << " not declared";
+  if (!std::regex_search(text, match, pattern)) {
+    ADD_FAILURE() << name << " not declared";
+    return 0.0;
+  }
   return std::stod(match[1].str());
 }
 
