@@ -15,6 +15,7 @@
 #include "film/develop.h"
 #include "film/display_transform.h"
 #include "film/grain.h"
+#include "film/sensor_noise.h"
 #include "film/vignette.h"
 
 namespace {
@@ -88,6 +89,14 @@ void BM_VignetteAndGrain(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_VignetteAndGrain)->Apply(sizes);
+
+/// Three channels of clumped noise where grain draws one: the dearer of the two noises.
+void BM_SensorNoise(benchmark::State& state) {
+  RgbImage frame = night_frame(int(state.range(0)), int(state.range(1)));
+  std::int64_t n = 0;
+  for (auto _ : state) raintrace::film::apply_sensor_noise(frame, 0.1, 1, ++n);
+}
+BENCHMARK(BM_SensorNoise)->Apply(sizes);
 
 void BM_Develop(benchmark::State& state) {
   one_oiio_thread();

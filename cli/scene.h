@@ -10,6 +10,7 @@
 #include "film/develop.h"
 #include "film/exposure.h"
 #include "film/grain.h"
+#include "film/sensor_noise.h"
 #include "povgen/export_params.h"
 #include "sim/param_table.h"
 #include "sim/params.h"
@@ -32,7 +33,8 @@ struct Scene {
   sim::SimParams sim;  ///< camera is filled identically in sim and look
   povgen::ExportParams look;
   /// How the rendered HDR frames are developed into PNGs ([camera] exposure_ev, view, look,
-  /// bloom, grain, vignette). Changing only these re-develops a folder without rendering it.
+  /// bloom, grain, sensor_noise, vignette). Changing only these re-develops a folder without
+  /// rendering it.
   film::DevelopSettings develop;
 };
 
@@ -52,6 +54,8 @@ inline constexpr sim::Param<film::DevelopSettings> kDevelopParams[] = {
                 sim::Range::closed(0, 1)),
     sim::number("camera", "grain", &film::DevelopSettings::grain, "RMS at mid-grey",
                 sim::Range::closed(0, film::kMaxGrain)),
+    sim::number("camera", "sensor_noise", &film::DevelopSettings::sensor_noise,
+                "relative RMS at mid-grey", sim::Range::closed(0, film::kMaxSensorNoise)),
     sim::number("camera", "vignette", &film::DevelopSettings::vignette, "",
                 sim::Range::closed(0, 1)),
 };

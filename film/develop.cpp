@@ -12,6 +12,7 @@
 #include "film/exposure.h"
 #include "film/grain.h"
 #include "film/image_file.h"
+#include "film/sensor_noise.h"
 #include "film/vignette.h"
 
 namespace raintrace::film {
@@ -32,15 +33,18 @@ void validate(const DevelopSettings& settings) {
   check_range("exposure_ev", settings.exposure_ev, -kExposureLimitEv, kExposureLimitEv);
   check_range("bloom", settings.bloom, 0.0, 1.0);
   check_range("grain", settings.grain, 0.0, kMaxGrain);
+  check_range("sensor_noise", settings.sensor_noise, 0.0, kMaxSensorNoise);
   check_range("vignette", settings.vignette, 0.0, 1.0);
 }
 
 std::string describe(const DevelopSettings& settings) {
   const std::string look =
       settings.view == View::filmic ? fmt::format(" look={}", to_string(settings.look)) : "";
-  return fmt::format("{} exposure_ev={} view={}{} bloom={} grain={} vignette={}", kDescribed,
+  const std::string noise =
+      settings.sensor_noise != 0.0 ? fmt::format(" sensor_noise={}", settings.sensor_noise) : "";
+  return fmt::format("{} exposure_ev={} view={}{} bloom={} grain={}{} vignette={}", kDescribed,
                      settings.exposure_ev, to_string(settings.view), look, settings.bloom,
-                     settings.grain, settings.vignette);
+                     settings.grain, noise, settings.vignette);
 }
 
 std::string describe(const DevelopSettings& settings, const FrameContext& frame) {
@@ -80,6 +84,9 @@ std::optional<DevelopDescription> parse_description(std::string_view text) {
       !number("frame", d.frame.frame)) {
     return std::nullopt;
   }
+  if (fields.contains("sensor_noise") && !number("sensor_noise", s.sensor_noise)) {
+    return std::nullopt;
+  }
   try {
     validate(s);
   } catch (const std::invalid_argument&) {
@@ -95,6 +102,7 @@ RgbImage develop(const RgbImage& linear, const DevelopSettings& settings, const 
   apply_exposure(image, settings.exposure_ev);
   apply_vignette(image, settings.vignette, frame.fov_deg);
   image = bloom(image, settings.bloom);
+  apply_sensor_noise(image, settings.sensor_noise, frame.seed, frame.frame);
   image = display.to_display(image, settings.view, settings.look);
   apply_grain(image, settings.grain, frame.seed, frame.frame);
   return image;

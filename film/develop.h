@@ -1,9 +1,10 @@
 // Developing a frame: the rendered scene-linear HDR frame → the picture a camera would show.
 // The order follows the light: exposure, the lens (vignetting, then glare scattered inside it),
-// the film's response (Filmic via OpenColorIO), then grain in the developed picture.
+// the sensor's noise, the film's response (Filmic via OpenColorIO), then grain in the developed
+// picture.
 //
-//   linear ─exposure_ev─▶ ─vignette (cos⁴)─▶ ─bloom (energy-conserving)─▶ ─view + look─▶ ─grain─▶
-//   display sRGB ─8-bit─▶ PNG
+//   linear ─exposure_ev─▶ ─vignette (cos⁴)─▶ ─bloom (energy-conserving)─▶ ─sensor noise─▶
+//   ─view + look─▶ ─grain─▶ display sRGB ─8-bit─▶ PNG
 //
 // Usage:
 //   const film::DisplayTransform filmic;                   // once: loads Blender's config
@@ -41,6 +42,9 @@ struct DevelopSettings {
   /// (5/255 on mid-grey at 1920 px, 1.7/255 at 640 px): fine, like a fast film stock scanned,
   /// enough to take the computer-clean edge off flat areas. 0 turns it off.
   double grain = 0.02;
+  /// A digital sensor's shot and read noise: its relative RMS at scene-linear mid-grey on a
+  /// 1920-pixel-wide frame, [0, 0.5] (see sensor_noise.h). Default 0 (off): grain alone.
+  double sensor_noise = 0.0;
   /// Strength of the cos⁴ falloff, [0, 1] (see vignette.h). Default 0.5: corners 0.43 stops
   /// darker at 60° and 16:9, a gentle darkening that holds the eye in the frame. 0 turns it off.
   double vignette = 0.5;
@@ -57,7 +61,9 @@ struct FrameContext {
 void validate(const DevelopSettings& settings);
 
 /// One line recording the settings, e.g. "raintrace develop: exposure_ev=-1 view=filmic
-/// look=medium-high-contrast bloom=0.04 grain=0 vignette=0" (no look with the standard view).
+/// look=medium-high-contrast bloom=0.04 grain=0 vignette=0" (no look with the standard view;
+/// "sensor_noise=…" after grain only when it is not 0, so pictures developed before it existed
+/// keep their description).
 /// Numbers in their shortest exact form, so parse_description() gives the same settings back.
 std::string describe(const DevelopSettings& settings);
 /// The same followed by the frame: "… fov_deg=60 seed=1 frame=16". develop_file() writes this
@@ -70,7 +76,7 @@ struct DevelopDescription {
   FrameContext frame;
 };
 /// Reads describe(settings, frame) back; nullopt for any other text (a PNG raintrace did not
-/// develop), a missing field, or a value out of range.
+/// develop), a missing field (sensor_noise may be missing: 0), or a value out of range.
 std::optional<DevelopDescription> parse_description(std::string_view text);
 
 /// Scene-linear frame → display-encoded sRGB in [0, 1], each step as its header says.

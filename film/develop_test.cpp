@@ -20,6 +20,7 @@
 #include "film/exposure.h"
 #include "film/grain.h"
 #include "film/image_file.h"
+#include "film/sensor_noise.h"
 #include "film/vignette.h"
 
 namespace raintrace::film {
@@ -66,12 +67,14 @@ TEST(Develop, RunsTheStepsInTheOrderOfTheLight) {
                                  .look = Look::high_contrast,
                                  .bloom = 0.2,
                                  .grain = 0.1,
+                                 .sensor_noise = 0.2,
                                  .vignette = 0.7};
   const FrameContext frame{.fov_deg = 70.0, .seed = 9, .frame = 4};
   RgbImage by_hand = linear;
   apply_exposure(by_hand, -1.5);
   apply_vignette(by_hand, 0.7, 70.0);
   by_hand = bloom(by_hand, 0.2);
+  apply_sensor_noise(by_hand, 0.2, 9, 4);  // the light reaching the sensor, before the curve
   by_hand = filmic().to_display(by_hand, View::filmic, Look::high_contrast);
   apply_grain(by_hand, 0.1, 9, 4);
   EXPECT_EQ(develop(linear, settings, frame, filmic()).pixels, by_hand.pixels);
@@ -108,6 +111,9 @@ TEST(Develop, ValidateNamesTheSettingOutOfRange) {
   s.grain = 0.9;
   EXPECT_NE(message(s).find("grain"), std::string::npos);
   s = {};
+  s.sensor_noise = 0.6;
+  EXPECT_NE(message(s).find("sensor_noise"), std::string::npos);
+  s = {};
   s.vignette = 2;
   EXPECT_NE(message(s).find("vignette"), std::string::npos);
   s = {};
@@ -129,6 +135,10 @@ TEST(Develop, DescribeRecordsEverySetting) {
             "raintrace develop: exposure_ev=0 view=standard bloom=0.04 grain=0.02 vignette=0.5");
   EXPECT_EQ(describe(s, {.fov_deg = 42.5, .seed = 7, .frame = 16}),
             describe(s) + " fov_deg=42.5 seed=7 frame=16");
+  // Sensor noise is named only when it is on: pictures developed before it keep their text.
+  EXPECT_EQ(describe({.grain = 0, .sensor_noise = 0.1}),
+            "raintrace develop: exposure_ev=0 view=filmic look=medium-high-contrast bloom=0.04 "
+            "grain=0 sensor_noise=0.1 vignette=0.5");
 }
 
 TEST(Develop, DescriptionReadsBackToTheSameSettingsAndFrame) {
@@ -147,10 +157,15 @@ TEST(Develop, DescriptionReadsBackToTheSameSettingsAndFrame) {
   const auto standard = parse_description(describe({.view = View::standard}, frame));
   ASSERT_TRUE(standard.has_value());
   EXPECT_EQ(standard->settings.view, View::standard);
+  const auto noisy = parse_description(describe({.sensor_noise = 0.15}, frame));
+  ASSERT_TRUE(noisy.has_value());
+  EXPECT_EQ(noisy->settings.sensor_noise, 0.15);
+  EXPECT_EQ(back->settings.sensor_noise, 0.0);  // not named: none
   // Not a description of ours, one without the frame, or with a value out of range.
   EXPECT_FALSE(parse_description("made with GIMP"));
   EXPECT_FALSE(parse_description(describe(s)));
   EXPECT_FALSE(parse_description(describe({.bloom = 2}, frame)));
+  EXPECT_FALSE(parse_description(describe({.sensor_noise = 0.7}, frame)));
   EXPECT_FALSE(parse_description(describe(s, frame) + " extra"));
 }
 

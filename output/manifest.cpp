@@ -91,6 +91,7 @@ json develop_spec_to_json(const DevelopSpec& spec) {
           {"look", std::string{film::to_string(s.look)}},
           {"bloom", s.bloom},
           {"grain", s.grain},
+          {"sensor_noise", s.sensor_noise},
           {"vignette", s.vignette},
           {"fov_deg", spec.fov_deg}};
 }
@@ -110,6 +111,7 @@ DevelopSpec develop_spec_from_json(const json& object) {
   s.look = *parsed_look;
   s.bloom = field<double>(object, "bloom", s.bloom);
   s.grain = field<double>(object, "grain", s.grain);
+  s.sensor_noise = field<double>(object, "sensor_noise", s.sensor_noise);
   s.vignette = field<double>(object, "vignette", s.vignette);
   spec.fov_deg = field<double>(object, "fov_deg", spec.fov_deg);
   try {

@@ -81,7 +81,7 @@ struct FolderIdentity {
 };
 
 /// How a folder's frames are developed: the scene's [camera] develop keys and the field of view
-/// vignetting follows (grain follows the identity's seed and each frame's number).
+/// vignetting follows (grain and sensor noise follow the identity's seed and each frame's number).
 struct DevelopSpec {
   film::DevelopSettings settings;
   double fov_deg = 60.0;

@@ -53,6 +53,7 @@ Manifest sample() {
                         .look = film::Look::high_contrast,
                         .bloom = 0.1,
                         .grain = 0,
+                        .sensor_noise = 0.07,
                         .vignette = 0.25};
   m.develop.fov_deg = 42.5;
   m.frames.push_back(f);
