@@ -11,6 +11,7 @@
 #include "film/exposure.h"
 #include "film/grain.h"
 #include "film/sensor_noise.h"
+#include "film/softness.h"
 #include "povgen/export_params.h"
 #include "sim/param_table.h"
 #include "sim/params.h"
@@ -33,8 +34,8 @@ struct Scene {
   sim::SimParams sim;  ///< camera is filled identically in sim and look
   povgen::ExportParams look;
   /// How the rendered HDR frames are developed into PNGs ([camera] exposure_ev, view, look,
-  /// bloom, grain, sensor_noise, vignette). Changing only these re-develops a folder without
-  /// rendering it.
+  /// bloom, softness, grain, sensor_noise, vignette). Changing only these re-develops a folder
+  /// without rendering it.
   film::DevelopSettings develop;
 };
 
@@ -52,6 +53,8 @@ inline constexpr sim::Param<film::DevelopSettings> kDevelopParams[] = {
     sim::choice<&film::DevelopSettings::look>("camera", "look", film::kLookNames),
     sim::number("camera", "bloom", &film::DevelopSettings::bloom, "share of the light",
                 sim::Range::closed(0, 1)),
+    sim::number("camera", "softness", &film::DevelopSettings::softness, "px at 1920 wide",
+                sim::Range::closed(0, film::kMaxSoftness)),
     sim::number("camera", "grain", &film::DevelopSettings::grain, "RMS at mid-grey",
                 sim::Range::closed(0, film::kMaxGrain)),
     sim::number("camera", "sensor_noise", &film::DevelopSettings::sensor_noise,

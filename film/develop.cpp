@@ -13,6 +13,7 @@
 #include "film/grain.h"
 #include "film/image_file.h"
 #include "film/sensor_noise.h"
+#include "film/softness.h"
 #include "film/vignette.h"
 
 namespace raintrace::film {
@@ -32,6 +33,7 @@ void check_range(const char* name, double value, double lo, double hi) {
 void validate(const DevelopSettings& settings) {
   check_range("exposure_ev", settings.exposure_ev, -kExposureLimitEv, kExposureLimitEv);
   check_range("bloom", settings.bloom, 0.0, 1.0);
+  check_range("softness", settings.softness, 0.0, kMaxSoftness);
   check_range("grain", settings.grain, 0.0, kMaxGrain);
   check_range("sensor_noise", settings.sensor_noise, 0.0, kMaxSensorNoise);
   check_range("vignette", settings.vignette, 0.0, 1.0);
@@ -40,10 +42,13 @@ void validate(const DevelopSettings& settings) {
 std::string describe(const DevelopSettings& settings) {
   const std::string look =
       settings.view == View::filmic ? fmt::format(" look={}", to_string(settings.look)) : "";
+  // Keys added since pictures were first described are named only when on.
+  const std::string softness =
+      settings.softness != 0.0 ? fmt::format(" softness={}", settings.softness) : "";
   const std::string noise =
       settings.sensor_noise != 0.0 ? fmt::format(" sensor_noise={}", settings.sensor_noise) : "";
-  return fmt::format("{} exposure_ev={} view={}{} bloom={} grain={}{} vignette={}", kDescribed,
-                     settings.exposure_ev, to_string(settings.view), look, settings.bloom,
+  return fmt::format("{} exposure_ev={} view={}{} bloom={}{} grain={}{} vignette={}", kDescribed,
+                     settings.exposure_ev, to_string(settings.view), look, settings.bloom, softness,
                      settings.grain, noise, settings.vignette);
 }
 
@@ -84,8 +89,9 @@ std::optional<DevelopDescription> parse_description(std::string_view text) {
       !number("frame", d.frame.frame)) {
     return std::nullopt;
   }
-  if (fields.contains("sensor_noise") && !number("sensor_noise", s.sensor_noise)) {
-    return std::nullopt;
+  for (const auto& [key, value] :
+       {std::pair{"softness", &s.softness}, std::pair{"sensor_noise", &s.sensor_noise}}) {
+    if (fields.contains(key) && !number(key, *value)) return std::nullopt;
   }
   try {
     validate(s);
@@ -101,6 +107,7 @@ RgbImage develop(const RgbImage& linear, const DevelopSettings& settings, const 
   RgbImage image = linear;
   apply_exposure(image, settings.exposure_ev);
   apply_vignette(image, settings.vignette, frame.fov_deg);
+  apply_softness(image, settings.softness);
   image = bloom(image, settings.bloom);
   apply_sensor_noise(image, settings.sensor_noise, frame.seed, frame.frame);
   image = display.to_display(image, settings.view, settings.look);

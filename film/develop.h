@@ -1,10 +1,10 @@
 // Developing a frame: the rendered scene-linear HDR frame → the picture a camera would show.
-// The order follows the light: exposure, the lens (vignetting, then glare scattered inside it),
-// the sensor's noise, the film's response (Filmic via OpenColorIO), then grain in the developed
-// picture.
+// The order follows the light: exposure, the lens (vignetting, its softness, then glare
+// scattered inside it), the sensor's noise, the film's response (Filmic via OpenColorIO), then
+// grain in the developed picture.
 //
-//   linear ─exposure_ev─▶ ─vignette (cos⁴)─▶ ─bloom (energy-conserving)─▶ ─sensor noise─▶
-//   ─view + look─▶ ─grain─▶ display sRGB ─8-bit─▶ PNG
+//   linear ─exposure_ev─▶ ─vignette (cos⁴)─▶ ─softness─▶ ─bloom (energy-conserving)─▶
+//   ─sensor noise─▶ ─view + look─▶ ─grain─▶ display sRGB ─8-bit─▶ PNG
 //
 // Usage:
 //   const film::DisplayTransform filmic;                   // once: loads Blender's config
@@ -38,6 +38,9 @@ struct DevelopSettings {
   /// range of measured veiling glare of photographic lenses (ISO 9358's veiling glare index is
   /// a few per cent): a soft halo around lamps far brighter than white, invisible elsewhere.
   double bloom = 0.04;
+  /// The lens's own blur: a Gaussian's standard deviation in pixels of a 1920-pixel-wide frame,
+  /// [0, 4] (see softness.h). Default 0 (every pixel as traced).
+  double softness = 0.0;
   /// Grain RMS on mid-grey of a 1920-pixel-wide frame, [0, 0.5] (see grain.h). Default 0.02
   /// (5/255 on mid-grey at 1920 px, 1.7/255 at 640 px): fine, like a fast film stock scanned,
   /// enough to take the computer-clean edge off flat areas. 0 turns it off.
@@ -62,8 +65,8 @@ void validate(const DevelopSettings& settings);
 
 /// One line recording the settings, e.g. "raintrace develop: exposure_ev=-1 view=filmic
 /// look=medium-high-contrast bloom=0.04 grain=0 vignette=0" (no look with the standard view;
-/// "sensor_noise=…" after grain only when it is not 0, so pictures developed before it existed
-/// keep their description).
+/// "softness=…" after bloom and "sensor_noise=…" after grain only when they are not 0, so
+/// pictures developed before they existed keep their description).
 /// Numbers in their shortest exact form, so parse_description() gives the same settings back.
 std::string describe(const DevelopSettings& settings);
 /// The same followed by the frame: "… fov_deg=60 seed=1 frame=16". develop_file() writes this
@@ -76,7 +79,8 @@ struct DevelopDescription {
   FrameContext frame;
 };
 /// Reads describe(settings, frame) back; nullopt for any other text (a PNG raintrace did not
-/// develop), a missing field (sensor_noise may be missing: 0), or a value out of range.
+/// develop), a missing field (softness and sensor_noise may be missing: 0), or a value out of
+/// range.
 std::optional<DevelopDescription> parse_description(std::string_view text);
 
 /// Scene-linear frame → display-encoded sRGB in [0, 1], each step as its header says.

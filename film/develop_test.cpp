@@ -21,6 +21,7 @@
 #include "film/grain.h"
 #include "film/image_file.h"
 #include "film/sensor_noise.h"
+#include "film/softness.h"
 #include "film/vignette.h"
 
 namespace raintrace::film {
@@ -66,6 +67,7 @@ TEST(Develop, RunsTheStepsInTheOrderOfTheLight) {
   const DevelopSettings settings{.exposure_ev = -1.5,
                                  .look = Look::high_contrast,
                                  .bloom = 0.2,
+                                 .softness = 2.0,
                                  .grain = 0.1,
                                  .sensor_noise = 0.2,
                                  .vignette = 0.7};
@@ -73,6 +75,7 @@ TEST(Develop, RunsTheStepsInTheOrderOfTheLight) {
   RgbImage by_hand = linear;
   apply_exposure(by_hand, -1.5);
   apply_vignette(by_hand, 0.7, 70.0);
+  apply_softness(by_hand, 2.0);  // the lens blurs before its glare scatters
   by_hand = bloom(by_hand, 0.2);
   apply_sensor_noise(by_hand, 0.2, 9, 4);  // the light reaching the sensor, before the curve
   by_hand = filmic().to_display(by_hand, View::filmic, Look::high_contrast);
@@ -111,6 +114,9 @@ TEST(Develop, ValidateNamesTheSettingOutOfRange) {
   s.grain = 0.9;
   EXPECT_NE(message(s).find("grain"), std::string::npos);
   s = {};
+  s.softness = 5;
+  EXPECT_NE(message(s).find("softness"), std::string::npos);
+  s = {};
   s.sensor_noise = 0.6;
   EXPECT_NE(message(s).find("sensor_noise"), std::string::npos);
   s = {};
@@ -135,10 +141,10 @@ TEST(Develop, DescribeRecordsEverySetting) {
             "raintrace develop: exposure_ev=0 view=standard bloom=0.04 grain=0.02 vignette=0.5");
   EXPECT_EQ(describe(s, {.fov_deg = 42.5, .seed = 7, .frame = 16}),
             describe(s) + " fov_deg=42.5 seed=7 frame=16");
-  // Sensor noise is named only when it is on: pictures developed before it keep their text.
-  EXPECT_EQ(describe({.grain = 0, .sensor_noise = 0.1}),
+  // Softness and sensor noise are named only when on: pictures developed before keep their text.
+  EXPECT_EQ(describe({.softness = 1, .grain = 0, .sensor_noise = 0.1}),
             "raintrace develop: exposure_ev=0 view=filmic look=medium-high-contrast bloom=0.04 "
-            "grain=0 sensor_noise=0.1 vignette=0.5");
+            "softness=1 grain=0 sensor_noise=0.1 vignette=0.5");
 }
 
 TEST(Develop, DescriptionReadsBackToTheSameSettingsAndFrame) {
@@ -157,10 +163,12 @@ TEST(Develop, DescriptionReadsBackToTheSameSettingsAndFrame) {
   const auto standard = parse_description(describe({.view = View::standard}, frame));
   ASSERT_TRUE(standard.has_value());
   EXPECT_EQ(standard->settings.view, View::standard);
-  const auto noisy = parse_description(describe({.sensor_noise = 0.15}, frame));
+  const auto noisy = parse_description(describe({.softness = 0.75, .sensor_noise = 0.15}, frame));
   ASSERT_TRUE(noisy.has_value());
+  EXPECT_EQ(noisy->settings.softness, 0.75);
   EXPECT_EQ(noisy->settings.sensor_noise, 0.15);
-  EXPECT_EQ(back->settings.sensor_noise, 0.0);  // not named: none
+  EXPECT_EQ(back->settings.softness, 0.0);  // not named: none
+  EXPECT_EQ(back->settings.sensor_noise, 0.0);
   // Not a description of ours, one without the frame, or with a value out of range.
   EXPECT_FALSE(parse_description("made with GIMP"));
   EXPECT_FALSE(parse_description(describe(s)));

@@ -90,6 +90,7 @@ json develop_spec_to_json(const DevelopSpec& spec) {
           {"view", std::string{film::to_string(s.view)}},
           {"look", std::string{film::to_string(s.look)}},
           {"bloom", s.bloom},
+          {"softness", s.softness},
           {"grain", s.grain},
           {"sensor_noise", s.sensor_noise},
           {"vignette", s.vignette},
@@ -110,6 +111,7 @@ DevelopSpec develop_spec_from_json(const json& object) {
   s.view = *parsed_view;
   s.look = *parsed_look;
   s.bloom = field<double>(object, "bloom", s.bloom);
+  s.softness = field<double>(object, "softness", s.softness);
   s.grain = field<double>(object, "grain", s.grain);
   s.sensor_noise = field<double>(object, "sensor_noise", s.sensor_noise);
   s.vignette = field<double>(object, "vignette", s.vignette);

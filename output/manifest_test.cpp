@@ -52,6 +52,7 @@ Manifest sample() {
                         .view = film::View::filmic,
                         .look = film::Look::high_contrast,
                         .bloom = 0.1,
+                        .softness = 1.25,
                         .grain = 0,
                         .sensor_noise = 0.07,
                         .vignette = 0.25};
