@@ -28,9 +28,10 @@ struct HdrOptions {
   /// Compare scene-linear values as stored (`--linear`).
   bool linear = false;
   /// The curve scene-linear input is developed with when its partner names no develop:
-  /// exposure_ev, view and look from the options; bloom, grain and vignetting off (softness and
-  /// sensor noise are off by default).
-  film::DevelopSettings curve{.bloom = 0.0, .grain = 0.0, .vignette = 0.0};
+  /// exposure_ev, view and look from the options; softness, bloom, noise, grain and vignetting
+  /// off.
+  film::DevelopSettings curve{
+      .bloom = 0.0, .softness = 0.0, .grain = 0.0, .sensor_noise = 0.0, .vignette = 0.0};
 };
 
 /// Develops scene-linear images for comparison; one per comparison run, shared by its threads
