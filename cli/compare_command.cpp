@@ -54,8 +54,8 @@ HDR input (OpenEXR, HDR: scene-linear light) is developed before it is compared,
 thresholds and metrics stay those of the picture a viewer sees (1/255 = one 8-bit step):
 against a PNG raintrace developed, exactly as that PNG's description says ("is this PNG its EXR
 developed?": within half a step of rounding); otherwise with the curve alone (--exposure-ev,
---view, --look; no softness, bloom, noise, grain or vignetting). --linear compares
-scene-linear values as stored instead: thresholds are then in linear units
+--view, --look; no spikes, softness, bloom, noise, grain or vignetting). --linear
+compares scene-linear values as stored instead: thresholds are then in linear units
 (--fail-relative suits them), and PSNR and SSIM, which assume a peak of 1, are not
 computed ("-"; null in --json).
 Exit codes: 0 all pass or warn, 1 any fail or missing frame, 2 unusable input.

@@ -28,7 +28,7 @@ output::FolderState claim_folder(const std::filesystem::path& out, const Scene& 
   auto folder =
       output::FolderState::claim(out, output::identity_of(canonical_scene_text(scene), to_export),
                                  force, this_command(), note);
-  folder.set_develop({scene.develop, scene.look.camera.fov_deg});
+  folder.set_develop({scene.develop, scene.look.camera.fov_deg, scene.look.aperture_m});
   return folder;
 }
 

@@ -83,6 +83,20 @@ void read_params(TableReader& r, std::span<const sim::Param<P>> table, P& object
   }
 }
 
+/// A bladed iris is a polygon: three blades at least. Its spikes' length comes from the opening's
+/// size, so it needs one.
+void check_aperture_blades(const TableReader& r, const Scene& scene) {
+  const int blades = scene.develop.aperture_blades;
+  if (blades == 1 || blades == 2) {
+    r.fail("aperture_blades", fmt::format("must be 0 (a round opening) or 3 to {} blades, got {}",
+                                          film::kMaxApertureBlades, blades));
+  }
+  if (blades != 0 && !(scene.look.aperture_m > 0.0)) {
+    r.fail("aperture_blades",
+           "needs camera.aperture_m > 0: the spikes' length comes from the opening's size");
+  }
+}
+
 /// Where to blame a camera problem: look_at when the file gives it, else position.
 std::string_view camera_key(const TableReader& r) {
   return r.where("look_at") ? "look_at" : "position";
@@ -150,7 +164,10 @@ void read_section(TableReader& r, Scene& scene) {
     read_params<std::remove_cvref_t<decltype(object)>>(r, table, object);
   });
   const std::string& section = r.section_name();
-  if (section == "camera") check_camera(r, scene.sim.camera);
+  if (section == "camera") {
+    check_camera(r, scene.sim.camera);
+    check_aperture_blades(r, scene);
+  }
   if (section == "wind") normalise_gust_direction(r, scene.sim.wind);
   if (section == "environment") check_include(r, scene.look.environment, scene.base_dir);
 }

@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "film/develop.h"
+#include "film/diffraction_spikes.h"
 #include "film/exposure.h"
 #include "film/grain.h"
 #include "film/sensor_noise.h"
@@ -34,8 +35,8 @@ struct Scene {
   sim::SimParams sim;  ///< camera is filled identically in sim and look
   povgen::ExportParams look;
   /// How the rendered HDR frames are developed into PNGs ([camera] exposure_ev, view, look,
-  /// bloom, softness, grain, sensor_noise, vignette). Changing only these re-develops a folder
-  /// without rendering it.
+  /// bloom, softness, grain, sensor_noise, vignette, aperture_blades). Changing only these
+  /// re-develops a folder without rendering it.
   film::DevelopSettings develop;
 };
 
@@ -61,6 +62,8 @@ inline constexpr sim::Param<film::DevelopSettings> kDevelopParams[] = {
                 "relative RMS at mid-grey", sim::Range::closed(0, film::kMaxSensorNoise)),
     sim::number("camera", "vignette", &film::DevelopSettings::vignette, "",
                 sim::Range::closed(0, 1)),
+    sim::integer("camera", "aperture_blades", &film::DevelopSettings::aperture_blades, "blades", 0,
+                 film::kMaxApertureBlades),
 };
 static_assert(sim::well_formed<film::DevelopSettings>(kDevelopParams));
 

@@ -105,6 +105,8 @@ std::vector<Probe> probes() {
             text = fmt::format("[{}, {}, {}]", value, v.y, v.z);
           }
           if (!row.section.empty()) probe.toml = fmt::format("[{}]\n", row.section);
+          // Blades need an opening (a rule between two keys, which the tables do not hold).
+          if (row.key == "aperture_blades") probe.toml += "aperture_m = 0.008\n";
           probe.toml += probe.key + " = " + text + "\n";
           out.push_back(probe);
         }

@@ -5,12 +5,12 @@
 //
 //   - A scene-linear image compared with a PNG that raintrace developed (its description reads
 //     "raintrace develop: …") is developed exactly as that PNG says — exposure, view, look,
-//     softness, bloom, sensor noise, grain, vignetting, for its frame and seed — so the
+//     spikes, softness, bloom, sensor noise, grain, vignetting, for its frame and seed — so the
 //     comparison asks "is this PNG its EXR developed?" (the answer is yes within half an 8-bit
 //     step of rounding).
 //   - Any other scene-linear image is developed with the curve alone: the options' exposure,
-//     view and look, without softness, bloom, noise, grain or vignetting (they would only blur
-//     the differences or add noise to them).
+//     view and look, without spikes, softness, bloom, noise, grain or vignetting (they would only
+//     blur the differences or add noise to them).
 //   - linear: the values are compared as stored; PSNR and SSIM, which assume a peak of 1, are
 //     not computed, and comparing scene-linear with display values is an error.
 #pragma once
@@ -28,10 +28,14 @@ struct HdrOptions {
   /// Compare scene-linear values as stored (`--linear`).
   bool linear = false;
   /// The curve scene-linear input is developed with when its partner names no develop:
-  /// exposure_ev, view and look from the options; softness, bloom, noise, grain and vignetting
-  /// off.
-  film::DevelopSettings curve{
-      .bloom = 0.0, .softness = 0.0, .grain = 0.0, .sensor_noise = 0.0, .vignette = 0.0};
+  /// exposure_ev, view and look from the options; diffraction spikes, softness, bloom, noise,
+  /// grain and vignetting off.
+  film::DevelopSettings curve{.bloom = 0.0,
+                              .softness = 0.0,
+                              .grain = 0.0,
+                              .sensor_noise = 0.0,
+                              .vignette = 0.0,
+                              .aperture_blades = 0};
 };
 
 /// Develops scene-linear images for comparison; one per comparison run, shared by its threads

@@ -132,7 +132,8 @@ TEST(HdrCompare, RenderFoldersCompareTheirPngsOrWithPreferHdrTheirExrs) {
   for (int n = 1; n <= 2; ++n) {
     const std::string stem = "frame_000" + std::to_string(n);
     write_exr(out / (stem + ".exr"), night());
-    film::develop_file(out / (stem + ".exr"), out / (stem + ".png"), {}, {60, 1, n}, filmic());
+    film::develop_file(out / (stem + ".exr"), out / (stem + ".png"), {},
+                       {.fov_deg = 60, .seed = 1, .frame = n}, filmic());
     fs::copy_file(out / (stem + ".png"), ref / (stem + ".png"));
   }
   const auto pngs = compare_paths(ref, out);

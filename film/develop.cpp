@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "film/bloom.h"
+#include "film/diffraction_spikes.h"
 #include "film/exposure.h"
 #include "film/grain.h"
 #include "film/image_file.h"
@@ -37,6 +38,11 @@ void validate(const DevelopSettings& settings) {
   check_range("grain", settings.grain, 0.0, kMaxGrain);
   check_range("sensor_noise", settings.sensor_noise, 0.0, kMaxSensorNoise);
   check_range("vignette", settings.vignette, 0.0, 1.0);
+  const int blades = settings.aperture_blades;
+  if (blades != 0 && !(blades >= 3 && blades <= kMaxApertureBlades)) {
+    throw std::invalid_argument(
+        fmt::format("aperture_blades must be 0 or in [3, {}], got {}", kMaxApertureBlades, blades));
+  }
 }
 
 std::string describe(const DevelopSettings& settings) {
@@ -47,14 +53,19 @@ std::string describe(const DevelopSettings& settings) {
       settings.softness != 0.0 ? fmt::format(" softness={}", settings.softness) : "";
   const std::string noise =
       settings.sensor_noise != 0.0 ? fmt::format(" sensor_noise={}", settings.sensor_noise) : "";
-  return fmt::format("{} exposure_ev={} view={}{} bloom={}{} grain={}{} vignette={}", kDescribed,
+  const std::string blades = settings.aperture_blades != 0
+                                 ? fmt::format(" aperture_blades={}", settings.aperture_blades)
+                                 : "";
+  return fmt::format("{} exposure_ev={} view={}{} bloom={}{} grain={}{} vignette={}{}", kDescribed,
                      settings.exposure_ev, to_string(settings.view), look, settings.bloom, softness,
-                     settings.grain, noise, settings.vignette);
+                     settings.grain, noise, settings.vignette, blades);
 }
 
 std::string describe(const DevelopSettings& settings, const FrameContext& frame) {
-  return fmt::format("{} fov_deg={} seed={} frame={}", describe(settings), frame.fov_deg,
-                     frame.seed, frame.frame);
+  const std::string aperture =
+      settings.aperture_blades != 0 ? fmt::format(" aperture_m={}", frame.aperture_m) : "";
+  return fmt::format("{} fov_deg={}{} seed={} frame={}", describe(settings), frame.fov_deg,
+                     aperture, frame.seed, frame.frame);
 }
 
 std::optional<DevelopDescription> parse_description(std::string_view text) {
@@ -93,6 +104,11 @@ std::optional<DevelopDescription> parse_description(std::string_view text) {
        {std::pair{"softness", &s.softness}, std::pair{"sensor_noise", &s.sensor_noise}}) {
     if (fields.contains(key) && !number(key, *value)) return std::nullopt;
   }
+  if (fields.contains("aperture_blades") &&
+      (!number("aperture_blades", s.aperture_blades) || !number("aperture_m", d.frame.aperture_m) ||
+       !(d.frame.aperture_m > 0.0))) {
+    return std::nullopt;
+  }
   try {
     validate(s);
   } catch (const std::invalid_argument&) {
@@ -107,6 +123,7 @@ RgbImage develop(const RgbImage& linear, const DevelopSettings& settings, const 
   RgbImage image = linear;
   apply_exposure(image, settings.exposure_ev);
   apply_vignette(image, settings.vignette, frame.fov_deg);
+  apply_diffraction_spikes(image, {settings.aperture_blades, frame.aperture_m}, frame.fov_deg);
   apply_softness(image, settings.softness);
   image = bloom(image, settings.bloom);
   apply_sensor_noise(image, settings.sensor_noise, frame.seed, frame.frame);

@@ -1,10 +1,10 @@
 // Developing a frame: the rendered scene-linear HDR frame → the picture a camera would show.
-// The order follows the light: exposure, the lens (vignetting, its softness, then glare
-// scattered inside it), the sensor's noise, the film's response (Filmic via OpenColorIO), then
-// grain in the developed picture.
+// The order follows the light: exposure, the lens (vignetting, the iris's diffraction spikes,
+// its softness, then glare scattered inside it), the sensor's noise, the film's response (Filmic
+// via OpenColorIO), then grain in the developed picture.
 //
-//   linear ─exposure_ev─▶ ─vignette (cos⁴)─▶ ─softness─▶ ─bloom (energy-conserving)─▶
-//   ─sensor noise─▶ ─view + look─▶ ─grain─▶ display sRGB ─8-bit─▶ PNG
+//   linear ─exposure_ev─▶ ─vignette (cos⁴)─▶ ─diffraction spikes─▶ ─softness─▶
+//   ─bloom (energy-conserving)─▶ ─sensor noise─▶ ─view + look─▶ ─grain─▶ display sRGB ─8-bit─▶ PNG
 //
 // Usage:
 //   const film::DisplayTransform filmic;                   // once: loads Blender's config
@@ -51,6 +51,10 @@ struct DevelopSettings {
   /// Strength of the cos⁴ falloff, [0, 1] (see vignette.h). Default 0.5: corners 0.43 stops
   /// darker at 60° and 16:9, a gentle darkening that holds the eye in the frame. 0 turns it off.
   double vignette = 0.5;
+  /// How many straight blades form the lens's iris, 0 or [3, kMaxApertureBlades] (see
+  /// diffraction_spikes.h): bright lights get a star of diffraction spikes, N rays for N even,
+  /// 2N for N odd. Default 0: a round opening, no spikes. Needs FrameContext::aperture_m > 0.
+  int aperture_blades = 0;
 };
 
 /// What develop needs to know about the frame itself.
@@ -58,6 +62,9 @@ struct FrameContext {
   double fov_deg = 60.0;   ///< the camera's horizontal field of view, (0, 180), for vignetting
   std::uint64_t seed = 1;  ///< the scene's seed, for grain
   std::int64_t frame = 1;  ///< the frame number, for grain
+  /// The lens opening's diameter (m; the scene's [camera] aperture_m), for the diffraction
+  /// spikes: > 0 whenever aperture_blades is not 0.
+  double aperture_m = 0.0;
 };
 
 /// Throws std::invalid_argument naming the field when a setting is out of its range.
@@ -65,12 +72,13 @@ void validate(const DevelopSettings& settings);
 
 /// One line recording the settings, e.g. "raintrace develop: exposure_ev=-1 view=filmic
 /// look=medium-high-contrast bloom=0.04 grain=0 vignette=0" (no look with the standard view;
-/// "softness=…" after bloom and "sensor_noise=…" after grain only when they are not 0, so
-/// pictures developed before they existed keep their description).
+/// "softness=…" after bloom, "sensor_noise=…" after grain and "aperture_blades=…" last only
+/// when they are not 0, so pictures developed before they existed keep their description).
 /// Numbers in their shortest exact form, so parse_description() gives the same settings back.
 std::string describe(const DevelopSettings& settings);
-/// The same followed by the frame: "… fov_deg=60 seed=1 frame=16". develop_file() writes this
-/// into each PNG, so a PNG says exactly how to develop its EXR again.
+/// The same followed by the frame: "… fov_deg=60 seed=1 frame=16", with " aperture_m=…" after
+/// fov_deg when aperture_blades is not 0. develop_file() writes this into each PNG, so a PNG says
+/// exactly how to develop its EXR again.
 std::string describe(const DevelopSettings& settings, const FrameContext& frame);
 
 /// What a PNG's description says it was developed with.
@@ -79,8 +87,8 @@ struct DevelopDescription {
   FrameContext frame;
 };
 /// Reads describe(settings, frame) back; nullopt for any other text (a PNG raintrace did not
-/// develop), a missing field (softness and sensor_noise may be missing: 0), or a value out of
-/// range.
+/// develop), a missing field (softness, sensor_noise and aperture_blades may be missing: 0;
+/// aperture_m must be there when aperture_blades is not 0), or a value out of range.
 std::optional<DevelopDescription> parse_description(std::string_view text);
 
 /// Scene-linear frame → display-encoded sRGB in [0, 1], each step as its header says.

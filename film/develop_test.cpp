@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "film/bloom.h"
+#include "film/diffraction_spikes.h"
 #include "film/exposure.h"
 #include "film/grain.h"
 #include "film/image_file.h"
@@ -70,12 +71,14 @@ TEST(Develop, RunsTheStepsInTheOrderOfTheLight) {
                                  .softness = 2.0,
                                  .grain = 0.1,
                                  .sensor_noise = 0.2,
-                                 .vignette = 0.7};
-  const FrameContext frame{.fov_deg = 70.0, .seed = 9, .frame = 4};
+                                 .vignette = 0.7,
+                                 .aperture_blades = 5};
+  const FrameContext frame{.fov_deg = 70.0, .seed = 9, .frame = 4, .aperture_m = 0.001};
   RgbImage by_hand = linear;
   apply_exposure(by_hand, -1.5);
   apply_vignette(by_hand, 0.7, 70.0);
-  apply_softness(by_hand, 2.0);  // the lens blurs before its glare scatters
+  apply_diffraction_spikes(by_hand, {5, 0.001}, 70.0);  // at the iris, before the glass's blur
+  apply_softness(by_hand, 2.0);                         // the lens blurs before its glare scatters
   by_hand = bloom(by_hand, 0.2);
   apply_sensor_noise(by_hand, 0.2, 9, 4);  // the light reaching the sensor, before the curve
   by_hand = filmic().to_display(by_hand, View::filmic, Look::high_contrast);
@@ -123,6 +126,11 @@ TEST(Develop, ValidateNamesTheSettingOutOfRange) {
   s.vignette = 2;
   EXPECT_NE(message(s).find("vignette"), std::string::npos);
   s = {};
+  s.aperture_blades = 2;
+  EXPECT_NE(message(s).find("aperture_blades"), std::string::npos);
+  s.aperture_blades = 17;
+  EXPECT_NE(message(s).find("aperture_blades"), std::string::npos);
+  s = {};
   s.view = View::standard;  // the look is Filmic's: the standard view ignores it
   s.look = Look::low_contrast;
   EXPECT_EQ(message(s), "(accepted)");
@@ -145,6 +153,12 @@ TEST(Develop, DescribeRecordsEverySetting) {
   EXPECT_EQ(describe({.softness = 1, .grain = 0, .sensor_noise = 0.1}),
             "raintrace develop: exposure_ev=0 view=filmic look=medium-high-contrast bloom=0.04 "
             "softness=1 grain=0 sensor_noise=0.1 vignette=0.5");
+  // So are the iris's blades, and with them the opening the spikes need, after fov_deg.
+  EXPECT_EQ(describe({.aperture_blades = 6}, {.fov_deg = 50, .frame = 3, .aperture_m = 0.008}),
+            "raintrace develop: exposure_ev=0 view=filmic look=medium-high-contrast bloom=0.04 "
+            "grain=0.02 vignette=0.5 aperture_blades=6 fov_deg=50 aperture_m=0.008 seed=1 frame=3");
+  EXPECT_EQ(describe({}, {.fov_deg = 50, .frame = 3, .aperture_m = 0.008}),
+            describe({}) + " fov_deg=50 seed=1 frame=3");
 }
 
 TEST(Develop, DescriptionReadsBackToTheSameSettingsAndFrame) {
@@ -169,11 +183,18 @@ TEST(Develop, DescriptionReadsBackToTheSameSettingsAndFrame) {
   EXPECT_EQ(noisy->settings.sensor_noise, 0.15);
   EXPECT_EQ(back->settings.softness, 0.0);  // not named: none
   EXPECT_EQ(back->settings.sensor_noise, 0.0);
+  EXPECT_EQ(back->settings.aperture_blades, 0);
+  const auto starry =
+      parse_description(describe({.aperture_blades = 7}, {.fov_deg = 50, .aperture_m = 0.004}));
+  ASSERT_TRUE(starry.has_value());
+  EXPECT_EQ(starry->settings.aperture_blades, 7);
+  EXPECT_EQ(starry->frame.aperture_m, 0.004);
   // Not a description of ours, one without the frame, or with a value out of range.
   EXPECT_FALSE(parse_description("made with GIMP"));
   EXPECT_FALSE(parse_description(describe(s)));
   EXPECT_FALSE(parse_description(describe({.bloom = 2}, frame)));
   EXPECT_FALSE(parse_description(describe({.sensor_noise = 0.7}, frame)));
+  EXPECT_FALSE(parse_description(describe({.aperture_blades = 6}, frame)));  // no opening
   EXPECT_FALSE(parse_description(describe(s, frame) + " extra"));
 }
 

@@ -589,8 +589,11 @@ void FolderState::set_contact_sheet_source(const std::string& key) {
 std::string develop_hash(const DevelopSpec& spec, std::uint64_t seed,
                          const film::RgbImage& response) {
   povgen::ContentHasher hasher;
-  hasher.update(
-      fmt::format("{} fov_deg={} seed={}\n", film::describe(spec.settings), spec.fov_deg, seed));
+  // The opening matters only to the spikes: named only with them, so other folders' hashes stay.
+  const std::string aperture =
+      spec.settings.aperture_blades != 0 ? fmt::format(" aperture_m={}", spec.aperture_m) : "";
+  hasher.update(fmt::format("{} fov_deg={}{} seed={}\n", film::describe(spec.settings),
+                            spec.fov_deg, aperture, seed));
   hasher.update(std::string_view{reinterpret_cast<const char*>(response.pixels.data()),
                                  response.pixels.size() * sizeof(float)});
   return hasher.hex();

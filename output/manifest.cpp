@@ -94,7 +94,9 @@ json develop_spec_to_json(const DevelopSpec& spec) {
           {"grain", s.grain},
           {"sensor_noise", s.sensor_noise},
           {"vignette", s.vignette},
-          {"fov_deg", spec.fov_deg}};
+          {"aperture_blades", s.aperture_blades},
+          {"fov_deg", spec.fov_deg},
+          {"aperture_m", spec.aperture_m}};
 }
 
 DevelopSpec develop_spec_from_json(const json& object) {
@@ -115,9 +117,14 @@ DevelopSpec develop_spec_from_json(const json& object) {
   s.grain = field<double>(object, "grain", s.grain);
   s.sensor_noise = field<double>(object, "sensor_noise", s.sensor_noise);
   s.vignette = field<double>(object, "vignette", s.vignette);
+  s.aperture_blades = field<int>(object, "aperture_blades", s.aperture_blades);
   spec.fov_deg = field<double>(object, "fov_deg", spec.fov_deg);
+  spec.aperture_m = field<double>(object, "aperture_m", spec.aperture_m);
   try {
     film::validate(s);
+    if (s.aperture_blades != 0 && !(spec.aperture_m > 0.0)) {
+      throw std::invalid_argument("aperture_blades needs aperture_m > 0");
+    }
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error(fmt::format("develop: {}", e.what()));
   }

@@ -80,13 +80,16 @@ struct FolderIdentity {
   bool operator==(const FolderIdentity&) const = default;
 };
 
-/// How a folder's frames are developed: the scene's [camera] develop keys and the field of view
-/// vignetting follows (grain and sensor noise follow the identity's seed and each frame's number).
+/// How a folder's frames are developed: the scene's [camera] develop keys, the field of view
+/// vignetting and the diffraction spikes follow, and the lens opening the spikes follow (grain and
+/// sensor noise follow the identity's seed and each frame's number).
 struct DevelopSpec {
   film::DevelopSettings settings;
   double fov_deg = 60.0;
+  double aperture_m = 0.0;
   bool operator==(const DevelopSpec& other) const {
-    return film::describe(settings) == film::describe(other.settings) && fov_deg == other.fov_deg;
+    return film::describe(settings) == film::describe(other.settings) && fov_deg == other.fov_deg &&
+           aperture_m == other.aperture_m;
   }
 };
 

@@ -55,8 +55,10 @@ Manifest sample() {
                         .softness = 1.25,
                         .grain = 0,
                         .sensor_noise = 0.07,
-                        .vignette = 0.25};
+                        .vignette = 0.25,
+                        .aperture_blades = 7};
   m.develop.fov_deg = 42.5;
+  m.develop.aperture_m = 0.0035;
   m.frames.push_back(f);
   return m;
 }
@@ -103,6 +105,10 @@ TEST(Manifest, AManifestWithoutAFormatIsOfTheFirstFormat) {
                std::runtime_error);
   EXPECT_THROW(manifest_from_json(R"({"raintrace_version": "x", "develop": {"bloom": 3}})"),
                std::runtime_error);
+  // Blades need the opening their spikes are drawn for.
+  EXPECT_THROW(
+      manifest_from_json(R"({"raintrace_version": "x", "develop": {"aperture_blades": 6}})"),
+      std::runtime_error);
 }
 
 TEST(Manifest, StatusesAreReadableWordsInTheJson) {

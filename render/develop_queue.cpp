@@ -15,6 +15,7 @@ DevelopTarget develop_target(const output::Manifest& m) {
   DevelopTarget t;
   t.settings = m.develop.settings;
   t.fov_deg = m.develop.fov_deg;
+  t.aperture_m = m.develop.aperture_m;
   t.seed = m.identity.seed;
   t.width = m.identity.width;
   t.height = m.identity.height;
@@ -40,7 +41,12 @@ DevelopResult develop_frame(const std::filesystem::path& out_dir, int frame,
   try {
     std::filesystem::create_directories(temp.parent_path());
     film::develop_file(out_dir / final_image_name(Pass::image, frame, target.digits), temp,
-                       target.settings, {target.fov_deg, target.seed, frame}, display);
+                       target.settings,
+                       {.fov_deg = target.fov_deg,
+                        .seed = target.seed,
+                        .frame = frame,
+                        .aperture_m = target.aperture_m},
+                       display);
     std::string why;
     if (!output::image_is_complete(temp, target.width, target.height, &why)) {
       throw std::runtime_error(

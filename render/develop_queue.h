@@ -29,9 +29,10 @@ namespace raintrace::render {
 /// What developing a folder's frames needs to know, from its manifest.
 struct DevelopTarget {
   film::DevelopSettings settings;
-  double fov_deg = 60.0;   ///< for vignetting
-  std::uint64_t seed = 1;  ///< for grain, with each frame's number
-  int width = 0;           ///< the frames' size: the PNG must decode at it
+  double fov_deg = 60.0;    ///< for vignetting and the diffraction spikes
+  double aperture_m = 0.0;  ///< for the diffraction spikes
+  std::uint64_t seed = 1;   ///< for grain, with each frame's number
+  int width = 0;            ///< the frames' size: the PNG must decode at it
   int height = 0;
   int digits = 4;  ///< digits of frame numbers in file names
 };

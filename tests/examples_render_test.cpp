@@ -60,7 +60,12 @@ std::vector<float> export_and_render(cli::Scene scene, const fs::path& dir,
   EXPECT_EQ(std::system(command.c_str()), 0) << "povray failed in " << dir;
   static const film::DisplayTransform display;
   film::develop_file(dir / "images" / "frame_0001.exr", dir / "images" / "frame_0001.png",
-                     scene.develop, {scene.look.camera.fov_deg, scene.sim.seed, 1}, display);
+                     scene.develop,
+                     {.fov_deg = scene.look.camera.fov_deg,
+                      .seed = scene.sim.seed,
+                      .frame = 1,
+                      .aperture_m = scene.look.aperture_m},
+                     display);
   return read_rgb(dir / "images" / "frame_0001.png");
 }
 
