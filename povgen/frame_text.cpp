@@ -314,6 +314,21 @@ void write_cylinder(Emitter& out, const CylinderValue& c, float radius) {
 // Each group of segments twice: the channel itself (RT_BoltCore, widened to at least half a
 // pixel with its light scaled to match), and around it the light that rain and cloud scatter out
 // of it (RT_BoltGlow, scene.inc), a merge so that segments meeting at a joint do not glow twice.
+// The glow's pattern is the angle a ray meets its surface at, so a cylinder's flat end cap, where
+// it juts out of its bent neighbour at a kink, glowed as a round spot beside the channel: a
+// sphere of the glow's radius at each end of each segment holds the caps inside the merge.
+void write_sphere(Emitter& out, const glm::vec3& centre, float radius) {
+  out.text("sphere{<");
+  out.number(centre.x);
+  out.text(",");
+  out.number(centre.y);
+  out.text(",");
+  out.number(centre.z);
+  out.text(">,");
+  out.number(radius);
+  out.text("}\n");
+}
+
 void write_bolts(Emitter& out, const std::vector<BoltValue>& bolts) {
   if (bolts.empty()) return;
   // Bolts are light, not rain: the rain mask leaves them out.
@@ -331,6 +346,9 @@ void write_bolts(Emitter& out, const std::vector<BoltValue>& bolts) {
     for (const CylinderValue& c : bolt.segments) {
       write_cylinder(out, c, c.radius * kBoltGlowRadii);
       out.text("}\n");
+      // A hair wider than the cylinder, so its cap's rim lies inside too.
+      write_sphere(out, c.start, c.radius * kBoltGlowRadii * 1.001f);
+      write_sphere(out, c.end, c.radius * kBoltGlowRadii * 1.001f);
     }
     out.text("RT_BoltGlow(");
     out.number(bolt.brightness);

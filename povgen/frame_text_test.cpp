@@ -65,6 +65,8 @@ TEST(FrameText, GoldenTinyFrame) {
       "}\n"
       "merge{\n"
       "cylinder{<0,100,50>,<2,0,50>,4}\n"
+      "sphere{<0,100,50>,4.004}\n"
+      "sphere{<2,0,50>,4.004}\n"
       "RT_BoltGlow(0.25)\n"
       "no_shadow hollow\n"
       "}\n"

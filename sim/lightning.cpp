@@ -50,7 +50,49 @@ std::vector<BoltSegment> walk(glm::dvec3 start, glm::dvec3 dir, double first_ste
   return out;
 }
 
+/// Splits the segment a→b into pieces at most kKinkSpacingM long (with_kinks in lightning.h),
+/// appending them to `out` in order from a to b.
+void split_into_kinks(glm::dvec3 a, glm::dvec3 b, const BoltSegment& like, double ground_y,
+                      std::uint64_t seed, std::uint64_t strike, std::uint64_t& counter,
+                      std::vector<BoltSegment>& out) {
+  const double length = glm::length(b - a);
+  if (length <= kKinkSpacingM) {
+    out.push_back({glm::vec3(a), glm::vec3(b), like.radius, like.generation});
+    return;
+  }
+  const glm::dvec3 along = (b - a) / length;
+  const glm::dvec3 helper = std::abs(along.y) < 0.9 ? glm::dvec3{0, 1, 0} : glm::dvec3{1, 0, 0};
+  const glm::dvec3 u = glm::normalize(glm::cross(along, helper));
+  const glm::dvec3 v = glm::cross(along, u);
+  // Box-Muller: two independent standard normals from two uniforms.
+  const double r =
+      std::sqrt(-2.0 * std::log(1.0 - uniform(seed, Stream::bolt_kinks, strike, counter++)));
+  const double phi = 2.0 * std::numbers::pi * uniform(seed, Stream::bolt_kinks, strike, counter++);
+  glm::dvec3 mid =
+      0.5 * (a + b) + kKinkSigma * length * r * (std::cos(phi) * u + std::sin(phi) * v);
+  mid.y = std::max(mid.y, ground_y);
+  split_into_kinks(a, mid, like, ground_y, seed, strike, counter, out);
+  split_into_kinks(mid, b, like, ground_y, seed, strike, counter, out);
+}
+
 }  // namespace
+
+BoltSkeleton with_kinks(const BoltSkeleton& bolt, double ground_y_m, std::uint64_t seed,
+                        std::uint64_t strike) {
+  BoltSkeleton out;
+  std::uint64_t counter = 0;
+  for (const BoltBranch& branch : bolt.branches) {
+    BoltBranch kinked;
+    kinked.generation = branch.generation;
+    kinked.parent = branch.parent;
+    for (const BoltSegment& s : branch.segments) {
+      split_into_kinks(glm::dvec3(s.start), glm::dvec3(s.end), s, ground_y_m, seed, strike, counter,
+                       kinked.segments);
+    }
+    out.branches.push_back(std::move(kinked));
+  }
+  return out;
+}
 
 std::vector<int> fibonacci_branch_counts(int generations) {
   std::vector<int> counts;

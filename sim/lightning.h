@@ -38,6 +38,23 @@ bool is_first_strike(const LightningParams& params, std::uint64_t strike);
 BoltSkeleton build_bolt(const LightningParams& params, const Camera& camera, double ground_y_m,
                         std::uint64_t seed, std::uint64_t strike);
 
+/// The channel's fine structure, which the skeleton's steps (tens of metres) leave out: a
+/// photographed channel bends every few metres. Hill (1968, "Analysis of irregular paths of
+/// lightning channels", J. Geophys. Res. 73, 1897) measured pieces of ~5 m between kinks and a
+/// mean absolute change of direction of 16° from one piece to the next. Every segment of
+/// `bolt` longer than kKinkSpacingM is split by midpoint displacement — its midpoint moved at
+/// right angles to it by a 2-D Gaussian of σ = kKinkSigma × its length, then each half split
+/// again — until every piece is at most kKinkSpacingM long; a midpoint never goes below
+/// ground_y_m. Ends, radius, generation and branch structure are kept; a pure function of its
+/// arguments.
+inline constexpr double kKinkSpacingM = 5.0;
+/// Chosen so that consecutive pieces differ by 16° on average (lightning_test.cpp measures it):
+/// one split alone bends by 2·atan(2|d|/l), 16° on average at σ = 0.056 (mean |d| = σ·√(π/2)),
+/// but the bends of the coarser splits add to the finest ones' at their joints.
+inline constexpr double kKinkSigma = 0.048;
+BoltSkeleton with_kinks(const BoltSkeleton& bolt, double ground_y_m, std::uint64_t seed,
+                        std::uint64_t strike);
+
 /// Flash brightness at `since_strike_s` after the strike: the sum of `return_strokes` strokes
 /// spread over flash_duration_s, each a sharp rise and exponential decay (time constant
 /// flash_duration_s / (4·return_strokes)), the first peaking at 1, later ones at 0.6–1. A

@@ -1,9 +1,12 @@
-// Lightning: Fibonacci branching, skeleton geometry, flash envelope, Poisson schedule.
+// Lightning: Fibonacci branching, skeleton geometry, the channel's kinks, flash envelope, Poisson
+// schedule.
 #include "sim/lightning.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <glm/geometric.hpp>
 #include <numbers>
 #include <utility>
@@ -59,6 +62,62 @@ TEST(Lightning, TrunkRunsFromCloudBaseToGroundInShrinkingConnectedSteps) {
   const double dist = std::hypot(trunk.back().end.x - cam.x, trunk.back().end.z - cam.z);
   EXPECT_GE(dist, p.distance_min_m - 0.3 * 300.0);
   EXPECT_LE(dist, p.distance_max_m + 0.3 * 300.0);
+}
+
+// The kinks: a straight 300 m channel becomes connected pieces of 2–5 m between the same
+// ends, whose direction changes from one piece to the next by 16° on average (Hill 1968's
+// photogrammetry of channels: ~5 m pieces, mean absolute change 16°), within 3°, over 20
+// channels; a channel skimming the ground never dips below it; the same strike kinks the same.
+TEST(Lightning, KinksBendTheChannelEveryFewMetresBySixteenDegreesOnAverage) {
+  BoltSkeleton straight;
+  for (int i = 0; i < 20; ++i) {
+    BoltBranch b;
+    b.generation = i % 3;
+    b.parent = i == 0 ? -1 : 0;
+    b.segments.push_back({glm::vec3(10.0f * float(i), 300, 0), glm::vec3(10.0f * float(i), 0, 0),
+                          0.5f, b.generation});
+    straight.branches.push_back(b);
+  }
+  const BoltSkeleton kinked = with_kinks(straight, 0.0, 7, 2);
+  ASSERT_EQ(kinked.branches.size(), straight.branches.size());
+  double turns = 0.0;
+  int count = 0;
+  for (std::size_t i = 0; i < kinked.branches.size(); ++i) {
+    const auto& segs = kinked.branches[i].segments;
+    EXPECT_EQ(kinked.branches[i].generation, straight.branches[i].generation);
+    EXPECT_EQ(kinked.branches[i].parent, straight.branches[i].parent);
+    // 300 m halved six times is 4.7 m, but the bends lengthen the halves: some split a 7th time.
+    EXPECT_GE(segs.size(), 64u);
+    EXPECT_LE(segs.size(), 128u);
+    EXPECT_EQ(segs.front().start, straight.branches[i].segments.front().start);
+    EXPECT_EQ(segs.back().end, straight.branches[i].segments.front().end);
+    for (std::size_t k = 0; k < segs.size(); ++k) {
+      EXPECT_LE(glm::length(segs[k].end - segs[k].start), kKinkSpacingM + 1e-4);
+      EXPECT_GT(glm::length(segs[k].end - segs[k].start), 0.4 * kKinkSpacingM);
+      EXPECT_EQ(segs[k].radius, 0.5f);
+      EXPECT_GE(segs[k].end.y, 0.0f);
+      if (k + 1 == segs.size()) continue;
+      EXPECT_EQ(segs[k].end, segs[k + 1].start);
+      const glm::dvec3 d0 = glm::normalize(glm::dvec3(segs[k].end - segs[k].start));
+      const glm::dvec3 d1 = glm::normalize(glm::dvec3(segs[k + 1].end - segs[k + 1].start));
+      turns += std::acos(std::clamp(glm::dot(d0, d1), -1.0, 1.0)) * 180.0 / std::numbers::pi;
+      ++count;
+    }
+  }
+  const double mean_turn = turns / count;
+  std::printf("mean change of direction between pieces: %.1f deg over %d joints\n", mean_turn,
+              count);
+  EXPECT_NEAR(mean_turn, 16.0, 3.0);
+  // A horizontal channel along the ground keeps above it.
+  BoltSkeleton low;
+  low.branches.push_back({0, -1, {{glm::vec3(0, 0, 0), glm::vec3(100, 0, 0), 0.5f, 0}}});
+  const BoltSkeleton low_kinked = with_kinks(low, 0.0, 7, 2);
+  ASSERT_GT(low_kinked.branches.front().segments.size(), 16u);
+  for (const auto& s : low_kinked.branches.front().segments) {
+    EXPECT_GE(s.start.y, 0.0f);
+  }
+  const BoltSkeleton again = with_kinks(straight, 0.0, 7, 2);
+  EXPECT_EQ(again.branches[3].segments[17].end, kinked.branches[3].segments[17].end);
 }
 
 TEST(Lightning, RadiusHalvesPerGeneration) {

@@ -21,6 +21,7 @@ enum class Stream : std::uint64_t {
   ground_count = 10,   ///< impacts sampled in a ground cell (a = cell, b = time slot)
   ground_impact = 11,  ///< one sampled impact (a = cell, b = slot·2^20 + impact·16 + dimension)
   ground_detail = 12,  ///< whether a drop's impact survives the level of detail (a = drop id)
+  bolt_kinks = 13,     ///< a bolt channel's fine kinks (a = strike number, b = counter)
 };
 
 /// SplitMix64's finaliser: a bijective mix with full avalanche.

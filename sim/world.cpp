@@ -434,8 +434,10 @@ Frame World::snapshot(int frame_index) const {
     bolt.id = strike.id;
     bolt.brightness = static_cast<float>(light.all_strokes);
     bolt.branch_brightness = static_cast<float>(light.first_stroke);
-    const BoltSkeleton skeleton = build_bolt(m_params.lightning, m_params.camera,
-                                             m_params.ground_y_m, m_params.seed, strike.id);
+    const BoltSkeleton skeleton =
+        with_kinks(build_bolt(m_params.lightning, m_params.camera, m_params.ground_y_m,
+                              m_params.seed, strike.id),
+                   m_params.ground_y_m, m_params.seed, strike.id);
     for (const BoltBranch& branch : skeleton.branches) {
       bolt.segments.insert(bolt.segments.end(), branch.segments.begin(), branch.segments.end());
     }
