@@ -294,40 +294,37 @@ void write_streak_mesh(Emitter& out, const std::vector<StreakValue>& streaks,
 // How far a bolt's glow reaches, in radii of its channel.
 constexpr float kBoltGlowRadii = 8.0f;
 
+/// "<x,y,z>"
+void write_point(Emitter& out, const glm::vec3& p) {
+  out.text("<");
+  out.number(p.x);
+  out.text(",");
+  out.number(p.y);
+  out.text(",");
+  out.number(p.z);
+  out.text(">");
+}
+
 void write_cylinder(Emitter& out, const CylinderValue& c, float radius) {
-  out.text("cylinder{<");
-  out.number(c.start.x);
+  out.text("cylinder{");
+  write_point(out, c.start);
   out.text(",");
-  out.number(c.start.y);
+  write_point(out, c.end);
   out.text(",");
-  out.number(c.start.z);
-  out.text(">,<");
-  out.number(c.end.x);
-  out.text(",");
-  out.number(c.end.y);
-  out.text(",");
-  out.number(c.end.z);
-  out.text(">,");
   out.number(radius);
+}
+
+void write_sphere(Emitter& out, const glm::vec3& centre, float radius) {
+  out.text("sphere{");
+  write_point(out, centre);
+  out.text(",");
+  out.number(radius);
+  out.text("}\n");
 }
 
 // Each group of segments twice: the channel itself (RT_BoltCore, widened to at least half a
 // pixel with its light scaled to match), and around it the light that rain and cloud scatter out
 // of it (RT_BoltGlow, scene.inc), a merge so that segments meeting at a joint do not glow twice.
-// The glow's pattern is the angle a ray meets its surface at, so a cylinder's flat end cap, where
-// it juts out of its bent neighbour at a kink, glowed as a round spot beside the channel: a
-// sphere of the glow's radius at each end of each segment holds the caps inside the merge.
-void write_sphere(Emitter& out, const glm::vec3& centre, float radius) {
-  out.text("sphere{<");
-  out.number(centre.x);
-  out.text(",");
-  out.number(centre.y);
-  out.text(",");
-  out.number(centre.z);
-  out.text(">,");
-  out.number(radius);
-  out.text("}\n");
-}
 
 void write_bolts(Emitter& out, const std::vector<BoltValue>& bolts) {
   if (bolts.empty()) return;
@@ -346,7 +343,10 @@ void write_bolts(Emitter& out, const std::vector<BoltValue>& bolts) {
     for (const CylinderValue& c : bolt.segments) {
       write_cylinder(out, c, c.radius * kBoltGlowRadii);
       out.text("}\n");
-      // A hair wider than the cylinder, so its cap's rim lies inside too.
+      // The glow's pattern is the angle a ray meets its surface at, so a cylinder's flat end cap,
+      // where it juts out of its bent neighbour at a kink, glowed as a round spot beside the
+      // channel: a sphere at each end, a hair wider than the cylinder so that the cap's rim lies
+      // inside too, holds the caps inside the merge.
       write_sphere(out, c.start, c.radius * kBoltGlowRadii * 1.001f);
       write_sphere(out, c.end, c.radius * kBoltGlowRadii * 1.001f);
     }
