@@ -87,7 +87,7 @@ void read_params(TableReader& r, std::span<const sim::Param<P>> table, P& object
 /// size, so it needs one.
 void check_aperture_blades(const TableReader& r, const Scene& scene) {
   const int blades = scene.develop.aperture_blades;
-  if (blades == 1 || blades == 2) {
+  if (!film::is_blade_count(blades)) {  // the table's range leaves only 1 and 2
     r.fail("aperture_blades", fmt::format("must be 0 (a round opening) or 3 to {} blades, got {}",
                                           film::kMaxApertureBlades, blades));
   }

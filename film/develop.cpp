@@ -38,10 +38,9 @@ void validate(const DevelopSettings& settings) {
   check_range("grain", settings.grain, 0.0, kMaxGrain);
   check_range("sensor_noise", settings.sensor_noise, 0.0, kMaxSensorNoise);
   check_range("vignette", settings.vignette, 0.0, 1.0);
-  const int blades = settings.aperture_blades;
-  if (blades != 0 && !(blades >= 3 && blades <= kMaxApertureBlades)) {
-    throw std::invalid_argument(
-        fmt::format("aperture_blades must be 0 or in [3, {}], got {}", kMaxApertureBlades, blades));
+  if (!is_blade_count(settings.aperture_blades)) {
+    throw std::invalid_argument(fmt::format("aperture_blades must be 0 or in [3, {}], got {}",
+                                            kMaxApertureBlades, settings.aperture_blades));
   }
 }
 

@@ -1,6 +1,8 @@
 // Diffraction spikes of a bladed iris (contract and physics in diffraction_spikes.h).
 #include "film/diffraction_spikes.h"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -25,8 +27,9 @@ double pixel_angle(double fov_deg, int width) {
 }
 
 void validate(const Aperture& aperture, double fov_deg) {
-  if (aperture.blades != 0 && (aperture.blades < 3 || aperture.blades > kMaxApertureBlades)) {
-    throw std::invalid_argument("aperture_blades must be 0 or in [3, 16]");
+  if (!is_blade_count(aperture.blades)) {
+    throw std::invalid_argument(
+        fmt::format("aperture_blades must be 0 or in [3, {}]", kMaxApertureBlades));
   }
   if (aperture.blades != 0 && !(aperture.diameter_m > 0.0)) {
     throw std::invalid_argument("aperture_blades needs an opening: aperture_m must be > 0");
@@ -87,6 +90,13 @@ void apply_diffraction_spikes(RgbImage& image, const Aperture& aperture, double 
     dx.push_back(std::cos(phi));
     dy.push_back(-std::sin(phi));
   }
+  // The rays start past the Airy disc's first dark ring (1.22 λ/D), where the edge-diffraction
+  // tail holds; nearer, the light stays. The same for every pixel of a channel.
+  int first[3];
+  for (int c = 0; c < 3; ++c) {
+    const double airy_px = 1.22 * kWavelengthM[c] / (aperture.diameter_m * theta);
+    first[c] = std::max(1, int(std::ceil(airy_px + 0.5)));
+  }
   // Spread from a copy, so light a pixel receives is never spread again.
   const RgbImage source = image;
   for (int y = 0; y < image.height; ++y) {
@@ -97,14 +107,11 @@ void apply_diffraction_spikes(RgbImage& image, const Aperture& aperture, double 
       }
       for (int c = 0; c < 3; ++c) {
         const double light = source.at(x, y, c);
-        // Per ray, E(>r) = per_ray / r pixels out. The rays start past the Airy disc's first
-        // dark ring (1.22 λ/D), where the edge-diffraction tail holds; nearer, the light stays.
+        // Per ray, E(>r) = per_ray / r pixels out.
         const double per_ray = light * share.rgb[c] / rays;
-        const double airy_px = 1.22 * kWavelengthM[c] / (aperture.diameter_m * theta);
-        const int first = std::max(1, int(std::ceil(airy_px + 0.5)));
         double sent = 0.0;
         for (int k = 0; k < rays; ++k) {
-          for (int r = first;; ++r) {
+          for (int r = first[c];; ++r) {
             const double sample = per_ray * (1.0 / (r - 0.5) - 1.0 / (r + 0.5));
             if (sample < kFaintestSample) break;
             // Pixel centres sit at whole indices here: the ray leaves (x, y)'s centre.

@@ -24,6 +24,10 @@ namespace raintrace::film {
 
 /// The most blades accepted (0 = a round opening: no spikes).
 inline constexpr int kMaxApertureBlades = 16;
+/// Whether an iris can have `blades` blades: 0 (round) or a polygon of 3 to kMaxApertureBlades.
+inline constexpr bool is_blade_count(int blades) {
+  return blades == 0 || (blades >= 3 && blades <= kMaxApertureBlades);
+}
 
 /// A lens's opening for diffraction: how many straight blades form it (0, or 3 … 16) and its
 /// diameter (m, that of the circle through the polygon's corners).
