@@ -357,8 +357,8 @@ TEST(SceneErrors, CrossFieldRules) {
             "lightning.distance_max_m, got 300 > 200");
   EXPECT_EQ(error_of("[wind]\ngust_direction = [0, 1, 0]\n"),
             "t.toml:2:18: wind.gust_direction: must point somewhere horizontally (x or z not 0; "
-            "y is ignored)");  // A bladed iris: a polygon of three blades or more, and an opening
-                               // for the spikes to come from.
+            "y is ignored)");
+  // A bladed iris: a polygon of three blades or more, and an opening for the spikes to come from.
   EXPECT_EQ(error_of("[camera]\naperture_m = 0.008\naperture_blades = 2\n"),
             "t.toml:3:19: camera.aperture_blades: must be 0 (a round opening) or 3 to 16 blades, "
             "got 2");
