@@ -125,14 +125,20 @@ std::string small_copy(const std::string& scene) {
 
 class DocExamples : public ::testing::Test {
  protected:
+  /// The running test's scratch folder, this checkout's own.
+  static fs::path work_folder() {
+    return raintrace::test_support::checkout_scratch_folder(
+        std::string{"raintrace_doc_examples_"} +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name(),
+        kSourceDir);
+  }
+
   void SetUp() override {
     if (std::system("command -v povray >/dev/null 2>&1") != 0) {
       GTEST_SKIP() << "POV-Ray is not installed: the render examples cannot run";
     }
     // One folder per test: ctest runs them as separate processes at the same time.
-    m_work = fs::path{::testing::TempDir()} /
-             (std::string{"raintrace_doc_examples_"} +
-              ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    m_work = work_folder();
     fs::remove_all(m_work);
     fs::create_directories(m_work / "examples");
     fs::create_directories(m_work / "tests");
@@ -195,9 +201,7 @@ class SlurmDocExamples : public DocExamples {
  protected:
   void SetUp() override {
     // A run that was killed (a ctest timeout) leaves its clusters running: stop them first.
-    const fs::path old = fs::path{::testing::TempDir()} /
-                         (std::string{"raintrace_doc_examples_"} +
-                          ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    const fs::path old = work_folder();
     if (fs::exists(old)) {
       for (const auto& entry : fs::directory_iterator(old)) {
         if (entry.path().filename().string().rfind("cluster_", 0) != 0) continue;

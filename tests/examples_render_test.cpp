@@ -19,6 +19,7 @@
 #include "output/budget.h"
 #include "output/export.h"
 #include "output/folder_state.h"
+#include "tests/support/command.h"
 #include "tests/support/pixels.h"
 
 namespace raintrace {
@@ -128,8 +129,9 @@ TEST_P(ExampleRender, FitsTheDefaultMemoryAndWorkLimitsWithRoomToSpare) {
 TEST_P(ExampleRender, RendersRainThatChangesThePicture) {
   if (!have_povray()) GTEST_SKIP() << "povray is not installed: example renders skipped";
   const cli::Scene scene = cli::load_scene_file(GetParam());
-  const fs::path work =
-      fs::temp_directory_path() / "raintrace_examples_render_test" / GetParam().stem();
+  const fs::path work = raintrace::test_support::checkout_scratch_folder(
+                            "raintrace_examples_render_test", RAINTRACE_SOURCE_DIR) /
+                        GetParam().stem();
   const auto rain = export_and_render(scene, work / "rain");
   ASSERT_FALSE(rain.empty());
   const auto [lo, hi] = std::minmax_element(rain.begin(), rain.end());

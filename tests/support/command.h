@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 
@@ -37,6 +38,17 @@ inline CommandResult run_command(const std::string& command) {
   const int status = pclose(pipe);
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
+}
+
+/// A folder of the temporary directory named after `name` and the source tree the tests were
+/// built from: the same on every run of one checkout (a test may clean up what a killed run
+/// left), different for two checkouts, whose test suites may run on one machine at once.
+inline std::filesystem::path checkout_scratch_folder(const std::string& name,
+                                                     const std::filesystem::path& source_dir) {
+  const std::size_t tree = std::hash<std::string>{}(source_dir.string());
+  std::ostringstream folder;
+  folder << name << '_' << std::hex << (tree & 0xffffffffu);
+  return std::filesystem::temp_directory_path() / folder.str();
 }
 
 }  // namespace raintrace::test_support
