@@ -45,7 +45,7 @@ std::vector<float> render_fog(const fs::path& dir, const std::string& samples) {
   }
   write_file_atomic(dir / "fog.inc", text);
   write_file_atomic(dir / "fog.pov", "#declare RT_Flash=0;\n#include \"fog.inc\"\n");
-  const std::string image = "images/fog" + std::to_string(samples.size()) + ".exr";
+  const std::string image = samples.empty() ? "images/written.exr" : "images/resampled.exr";
   EXPECT_EQ(run_povray(dir, "fog.pov +W160 +H90 +FE -A +L. +WT1 +O" + image), 0) << log_of(dir);
   const std::vector<float> rgb = read_rgb(dir / image);
   std::vector<float> green;
