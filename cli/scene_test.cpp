@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "cli/scene.h"
+#include "tests/support/command.h"
 
 namespace raintrace::cli {
 namespace {
@@ -409,7 +410,7 @@ TEST(LoadSceneFile, MissingFileIsASceneError) {
 
 TEST(LoadSceneFile, ReadsTheFileAndResolvesIncludesBesideIt) {
   namespace fs = std::filesystem;
-  const fs::path dir = fs::path(testing::TempDir()) / "raintrace_scene_file_test";
+  const fs::path dir = raintrace::test_support::process_scratch_path("raintrace_scene_file_test");
   fs::create_directories(dir / "env");
   std::ofstream(dir / "env" / "street.inc") << "// user environment\n";
   std::ofstream(dir / "scene.toml") << "seed = 5\n[environment]\ninclude = \"env/street.inc\"\n";

@@ -3,6 +3,7 @@
 // OpenColorIO: Filmic Log = (log2 x + 12.473931188) / 25 → desaturation cube (a grey stays grey:
 // read its diagonal) → ÷ 0.66 → the 4096-entry base-contrast curve, linearly interpolated.
 #include "film/display_transform.h"
+#include "tests/support/command.h"
 
 #include <gtest/gtest.h>
 
@@ -210,7 +211,7 @@ TEST(FilmicConfig, TheUsersOcioVariableDoesNotChangeThePicture) {
 
 TEST(FilmicConfig, AnotherConfigurationIsRefusedByName) {
   // A valid OpenColorIO configuration without Filmic.
-  const fs::path dir = fs::temp_directory_path() / "raintrace_film_other_config";
+  const fs::path dir = raintrace::test_support::process_scratch_path("raintrace_film_other_config");
   fs::create_directories(dir);
   const fs::path config = dir / "config.ocio";
   std::ofstream(config) << "ocio_profile_version: 2\n"

@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "sim/ripples.h"
+#include "tests/support/command.h"
 
 namespace raintrace::povgen {
 namespace {
@@ -159,7 +160,7 @@ TEST(RippleMap, PngHoldsHeightsAndTheGroundsStateAsPovRayReadsThem) {
   map.height_m = {0.001f, -0.0005f, 0.0f};
   map.film = {0.0f, 0.25f, 1.0f};
   const std::filesystem::path path =
-      std::filesystem::temp_directory_path() / "raintrace_ripple_map_test.png";
+      raintrace::test_support::process_scratch_path("raintrace_ripple_map_test.png");
   write_ripple_png(path, map);
   auto in = OIIO::ImageInput::open(path.string());
   ASSERT_TRUE(in);

@@ -9,6 +9,7 @@
 #include "povgen/frame_values.h"
 #include "povgen/output_folder.h"
 #include "povgen/scene_files.h"
+#include "tests/support/command.h"
 
 namespace raintrace::povgen {
 namespace {
@@ -71,7 +72,7 @@ TEST(GroundScene, FrameDeclaresItsTimeAndNamesItsRippleMapWithItsHash) {
 }
 
 TEST(GroundScene, SharedFilesHoldTheIncludeAndTheMaskFramesTheirMaps) {
-  const fs::path dir = fs::temp_directory_path() / "raintrace_ground_scene_test";
+  const fs::path dir = raintrace::test_support::process_scratch_path("raintrace_ground_scene_test");
   fs::remove_all(dir);
   ExportParams look = with_puddles();
   look.width = 64;

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "povgen/output_folder.h"
+#include "tests/support/command.h"
 
 namespace raintrace::povgen {
 namespace {
@@ -46,7 +47,7 @@ TEST(SceneFiles, IniRendersTheFramesItIsGiven) {
 TEST(SceneFiles, TheSharedFilesHashDoesNotDependOnWhichFramesSceneIniRenders) {
   // Exporting frames 1-2 and then 3-4 into one folder must not make frames 1-2 look changed.
   namespace fs = std::filesystem;
-  const fs::path dir = fs::path(::testing::TempDir()) / "raintrace_shared_files_hash";
+  const fs::path dir = raintrace::test_support::process_scratch_path("raintrace_shared_files_hash");
   fs::remove_all(dir);
   const ExportParams look;
   const std::string first = write_shared_files(dir / "a", look, 48, dir, {1, 2});

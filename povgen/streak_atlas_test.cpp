@@ -11,6 +11,7 @@
 #include <random>
 
 #include "povgen/test_support/atlas_texels.h"
+#include "tests/support/command.h"
 
 namespace raintrace::povgen {
 namespace {
@@ -148,7 +149,7 @@ TEST(StreakAtlas, PngHoldsTheSixteenBitPixels) {
   StreakAtlasLayout layout;
   layout.motions = 2;
   layout.opacity_levels = 3;
-  const auto path = std::filesystem::temp_directory_path() / "raintrace_atlas_test.png";
+  const auto path = raintrace::test_support::process_scratch_path("raintrace_atlas_test.png");
   write_streak_atlas(path, layout);
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);

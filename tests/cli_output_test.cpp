@@ -58,7 +58,8 @@ std::string run(const std::string& command, const fs::path& work) {
 }
 
 TEST(CliOutput, EveryCommandPrintsWhatOutTxtSays) {
-  const fs::path work = fs::path{::testing::TempDir()} / "raintrace_cli_output";
+  const fs::path work =
+      raintrace::test_support::checkout_scratch_folder("raintrace_cli_output", kSourceDir);
   fs::create_directories(work);
   std::string actual;
   for (const std::string& command : commands()) actual += run(command, work);

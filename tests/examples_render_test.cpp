@@ -99,7 +99,7 @@ TEST(PartialExport, SceneIniRendersExactlyTheExportedFrames) {
   scene.look.height = 18;
   scene.sim.prewarm_s = 0.0;
   scene.sim.substep_s = 0.01;
-  const fs::path dir = fs::path{::testing::TempDir()} / "raintrace_partial_export";
+  const fs::path dir = raintrace::test_support::process_scratch_path("raintrace_partial_export");
   fs::remove_all(dir);
   // Once `povray scene.ini` of a folder exported with --frames 1-2 failed at frame 3.
   export_range(scene, dir, 2, 3);

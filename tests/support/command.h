@@ -3,6 +3,7 @@
 #pragma once
 
 #include <sys/wait.h>
+#include <unistd.h>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -49,6 +50,16 @@ inline std::filesystem::path checkout_scratch_folder(const std::string& name,
   std::ostringstream folder;
   folder << name << '_' << std::hex << (tree & 0xffffffffu);
   return std::filesystem::temp_directory_path() / folder.str();
+}
+
+/// A file or folder of the temporary directory named after `name` and this test process (the
+/// process's number goes before the extension, which says what a file holds): two test suites
+/// running at once (two checkouts, or a build's tests beside a fresh clone's) never share it.
+/// For tests that remove what they make.
+inline std::filesystem::path process_scratch_path(const std::string& name) {
+  const std::filesystem::path path{name};
+  return std::filesystem::temp_directory_path() /
+         (path.stem().string() + '_' + std::to_string(::getpid()) + path.extension().string());
 }
 
 }  // namespace raintrace::test_support
