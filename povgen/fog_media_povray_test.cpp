@@ -64,7 +64,7 @@ TEST(PovRayFogMedia, ALampsLitAirIsTheConvergedMediumsSoftCone) {
   look.height = 90;
   look.environment.include_path = "environment_source.inc";
   look.rain_medium = false;
-  look.fog.mode = FogMode::media;  // heavy_fog's: 0.15 /m out to 30 m
+  look.fog.mode = FogMode::media;  // a dense mist, 0.15 /m out to 30 m (heavy_fog's is 0.07)
   look.fog.density_per_m = 0.15;
   look.fog.depth_m = 30.0;
   write_shared_files(dir, look, 1, dir, {1, 1});
