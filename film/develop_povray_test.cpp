@@ -12,6 +12,7 @@
 #include "film/develop.h"
 #include "film/display_transform.h"
 #include "film/image_file.h"
+#include "tests/support/command.h"
 
 namespace raintrace::film {
 namespace {
@@ -34,8 +35,7 @@ box { <0, -1, 0>, <1, 1, 0.1> pigment { rgb 8 } finish { Glow } }
 
 TEST(PovRayHdr, ExrKeepsALampAt8AndDevelopsItByTheContract) {
   if (!have_povray()) GTEST_SKIP() << "povray is not installed: POV-Ray tests skipped";
-  const fs::path dir =
-      fs::temp_directory_path() / ("raintrace_film_povray_" + std::to_string(::getpid()));
+  const fs::path dir = raintrace::test_support::process_scratch_path("raintrace_film_povray");
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::ofstream(dir / "patches.pov") << kScene;

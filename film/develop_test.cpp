@@ -24,6 +24,7 @@
 #include "film/sensor_noise.h"
 #include "film/softness.h"
 #include "film/vignette.h"
+#include "tests/support/command.h"
 
 namespace raintrace::film {
 namespace {
@@ -201,7 +202,7 @@ TEST(Develop, DescriptionReadsBackToTheSameSettingsAndFrame) {
 class DevelopFile : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir = fs::temp_directory_path() / ("raintrace_develop_" + std::to_string(::getpid()));
+    dir = raintrace::test_support::process_scratch_path("raintrace_develop");
     fs::remove_all(dir);
     fs::create_directories(dir);
   }

@@ -8,6 +8,8 @@
 #include <system_error>
 #include <vector>
 
+#include "tests/support/command.h"
+
 namespace raintrace::output::testing {
 
 /// The folders fresh_test_dir() made in this process. They are removed when the process ends if
@@ -36,8 +38,7 @@ class TestDirs {
 };
 
 inline std::filesystem::path fresh_test_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("raintrace_test_" + name + "_" + std::to_string(::getpid()));
+  const auto dir = raintrace::test_support::process_scratch_path("raintrace_test_" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   TestDirs::made().add(dir);

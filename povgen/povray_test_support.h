@@ -12,6 +12,7 @@
 #include <string>
 
 #include "povgen/output_folder.h"
+#include "tests/support/command.h"
 #include "tests/support/pixels.h"
 
 namespace raintrace::povgen::testing {
@@ -19,8 +20,7 @@ namespace raintrace::povgen::testing {
 /// A folder of the temporary directory for one test, unique to this process: engineers and CI
 /// jobs sharing a machine (and /tmp) run the same tests at the same time.
 inline std::filesystem::path scratch_folder(const std::string& name) {
-  return std::filesystem::temp_directory_path() /
-         ("raintrace_" + name + "_" + std::to_string(::getpid()));
+  return ::raintrace::test_support::process_scratch_path("raintrace_" + name);
 }
 
 inline bool have_povray() { return std::system("command -v povray >/dev/null 2>&1") == 0; }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "povgen/output_folder.h"
+#include "tests/support/command.h"
 
 namespace raintrace::povgen {
 namespace {
@@ -21,8 +22,8 @@ class UserInclude : public ::testing::Test {
   void SetUp() override {
     // ctest runs each test in its own process, in parallel: one folder per test and process.
     const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    m_root = fs::temp_directory_path() / ("raintrace_templates_test_" + std::string{test->name()} +
-                                          "_" + std::to_string(::getpid()));
+    m_root = raintrace::test_support::process_scratch_path("raintrace_templates_test_" +
+                                                           std::string{test->name()});
     fs::remove_all(m_root);
     fs::create_directories(m_root / "scene" / "inc");
     std::ofstream(m_root / "scene" / "inc" / "mine.inc") << "sphere{0,1}\n";

@@ -58,7 +58,7 @@ inline std::filesystem::path checkout_scratch_folder(const std::string& name,
 /// For tests that remove what they make.
 inline std::filesystem::path process_scratch_path(const std::string& name) {
   const std::filesystem::path path{name};
-  return std::filesystem::temp_directory_path() /
+  return std::filesystem::temp_directory_path() / path.parent_path() /
          (path.stem().string() + '_' + std::to_string(::getpid()) + path.extension().string());
 }
 
