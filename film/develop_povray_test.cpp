@@ -2,7 +2,6 @@
 // by `+FE` keeps values above 1, and develops as the contract says.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>

@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <OpenImageIO/imageio.h>
-#include <unistd.h>
 #include <cmath>
 #include <filesystem>
 #include <fstream>

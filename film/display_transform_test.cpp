@@ -3,7 +3,6 @@
 // OpenColorIO: Filmic Log = (log2 x + 12.473931188) / 25 → desaturation cube (a grey stays grey:
 // read its diagonal) → ÷ 0.66 → the 4096-entry base-contrast curve, linearly interpolated.
 #include "film/display_transform.h"
-#include "tests/support/command.h"
 
 #include <gtest/gtest.h>
 
@@ -17,6 +16,8 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "tests/support/command.h"
 
 namespace raintrace::film {
 namespace {

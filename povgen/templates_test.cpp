@@ -2,7 +2,6 @@
 #include "povgen/templates.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
