@@ -2,7 +2,8 @@
 // pictures the real POV-Ray renders from `raintrace export` folders (label povray; skipped where
 // povray is missing):
 //  - thunderstorm (Fig. 1): a frame of the clip shows the lightning channel itself, a bright
-//    line running down a good part of the picture, not just a brightening;
+//    line running down a good part of the picture, not just a brightening, and the channel
+//    brings the camera as much light as a return stroke does;
 //  - closeup (Fig. 5): the drop covers a large part of the frame and shows the scene behind it
 //    upside down. The scene is replaced by closeup.inc's test card (RT_TestCard: a sky warm
 //    above and blue below the line of sight to the drop), so "upside down" has one meaning;
@@ -88,14 +89,16 @@ void export_example(const std::string& example, const fs::path& dir, const std::
 }
 
 // Renders one scene file of the folder (path relative to it) into images/NAME.png, 16:9 like
-// the examples, with extra POV-Ray options.
+// the examples, with extra POV-Ray options; into images/NAME.exr, scene-linear, if `exr`.
 Image render(const fs::path& dir, const std::string& scene, const std::string& name, int width,
-             const std::string& options) {
-  const std::string command = "cd '" + dir.string() + "' && povray " + scene + " +L. -D -A +FN +W" +
-                              std::to_string(width) + " +H" + std::to_string(width * 9 / 16) +
-                              " +Oimages/" + name + ".png " + options + " >povray.log 2>&1";
+             const std::string& options, bool exr = false) {
+  const std::string file = "images/" + name + (exr ? ".exr" : ".png");
+  const std::string command = "cd '" + dir.string() + "' && povray " + scene + " +L. -D -A " +
+                              (exr ? "+FE" : "+FN") + " +W" + std::to_string(width) + " +H" +
+                              std::to_string(width * 9 / 16) + " +O" + file + " " + options +
+                              " >povray.log 2>&1";
   EXPECT_EQ(std::system(command.c_str()), 0) << read_text(dir / "povray.log");
-  return read_image(dir / "images" / (name + ".png"));
+  return read_image(dir / file);
 }
 
 // How many pixels of the rectangle x0 <= x < x1, y0 <= y < y1 are brighter in `lighter` than in
@@ -171,6 +174,36 @@ TEST(ExampleFigures, ThunderstormClipShowsTheLightningChannel) {
   }
   EXPECT_GE(frames_with_bolts, 4) << "the forced strike's flash should last several frames";
   EXPECT_GE(tallest, 0.2) << "no frame shows a lightning channel across a fifth of the picture";
+  fs::remove_all(dir.parent_path());
+}
+
+// thunderstorm: frame 13, the forced strike's brightest, rendered as scene-linear EXR with and
+// without its bolt block. A return stroke radiates about 870 J per metre of channel (Krider,
+// Dawson and Uman 1968); from 500 m through heavy rain, over a 1/50 s exposure, its visible part
+// brings the camera tens of times the light of a street lamp 20 m away. So the light the bolt
+// adds to the frame must at least equal all the rest of the frame's light (lamps, signs, the
+// flash-lit street and sky) together, not be a thin line beside them.
+TEST(ExampleFigures, ThunderstormBoltBringsTheCameraMoreLightThanTheWholeStreet) {
+  if (!have_povray()) GTEST_SKIP() << "povray is not installed";
+  const fs::path dir = work_dir("thunderstorm_light");
+  export_example("thunderstorm", dir, "13");
+  const std::string text = read_text(dir / "frames" / "frame_0013.pov");
+  const std::size_t bolt = text.find("#if(RT_Mask=0)\n");
+  ASSERT_NE(bolt, std::string::npos) << "frame 13 should draw the forced strike's bolt";
+  std::ofstream(dir / "frames" / "no_bolt.pov") << text.substr(0, bolt);
+  const Image with = render(dir, "frames/frame_0013.pov", "with", 320, "", true);
+  const Image without = render(dir, "frames/no_bolt.pov", "without", 320, "", true);
+  ASSERT_EQ(with.rgb.size(), without.rgb.size());
+  ASSERT_FALSE(with.rgb.empty());
+  double added = 0.0, street = 0.0;
+  for (int y = 0; y < with.height; ++y) {
+    for (int x = 0; x < with.width; ++x) {
+      added += with.luma(x, y) - without.luma(x, y);
+      street += without.luma(x, y);
+    }
+  }
+  EXPECT_GE(added, street) << "the bolt adds " << added / street
+                           << " of the rest of the frame's light";
   fs::remove_all(dir.parent_path());
 }
 
