@@ -61,12 +61,17 @@ std::string fog_text(const FogParams& fog, const sim::Camera& camera) {
 // counts. Final quality stops at a variance of 1/8000 (up to 256 samples): at 1/2000 (up to
 // 128) the closeup's blurred street was salted with dark specks, a render's tell (mean
 // |pixel − its 5×5 mean| 5.9 % of the level, 3.3 % now, for 2.1× the frame's CPU; BENCHMARKS.md,
-// "Focal blur"). Preview takes fewer: grainier discs, the same picture.
+// "Focal blur"). The variance is absolute, so in the dark a pixel stopped at the least number
+// of samples; with only 16 the same pattern of 16 rays in every pixel drew the blurred
+// background as 16 overlaid copies, blotches with jagged edges (blind viewers of the closeup:
+// "blotchy patches top left"). At least 32: the blotches go, their error after a 9×9 blur
+// falls from 1.5 % to 1.0 % of the level against 128 (BENCHMARKS.md, "Focal blur's least
+// samples"). Preview takes fewer: grainier discs, the same picture.
 std::string focal_blur_text(const ExportParams& look) {
   if (!traces_focal_blur(look)) return {};
   const bool preview = look.quality == Quality::preview;
   return " aperture " + format_number(2.0 * look.aperture_m) + " blur_samples " +
-         (preview ? "4,16" : "16,256") + " focal_point " + vec(look.camera.look_at) +
+         (preview ? "4,16" : "32,256") + " focal_point " + vec(look.camera.look_at) +
          " confidence 0.95 variance " + (preview ? "1/2000" : "1/8000");
 }
 
