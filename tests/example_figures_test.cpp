@@ -135,6 +135,17 @@ DefaultPair render_default_twice(const std::string& name, int width, const std::
   return pair;
 }
 
+// thunderstorm: writes frames/no_bolt.pov, the frame FILE (relative to the folder) cut where its
+// bolt block starts, so it renders with the flash's light but without the bolt. False if FILE
+// draws no bolt.
+bool write_frame_without_bolt(const fs::path& dir, const std::string& file) {
+  const std::string text = read_text(dir / file);
+  const std::size_t bolt = text.find("#if(RT_Mask=0)\n");
+  if (bolt == std::string::npos) return false;
+  std::ofstream(dir / "frames" / "no_bolt.pov") << text.substr(0, bolt);
+  return true;
+}
+
 // thunderstorm: every frame that draws a bolt, rendered as exported and again with its bolt
 // block removed (the flash's light stays). The channel is where the bolt alone makes a pixel
 // near white (≥ 0.9 after POV-Ray's clip to 1) that was at least 0.3 darker without it — the
@@ -150,11 +161,8 @@ TEST(ExampleFigures, ThunderstormClipShowsTheLightningChannel) {
   double tallest = 0.0;
   for (int frame = 12; frame <= 20; ++frame) {
     const std::string file = "frames/frame_00" + std::to_string(frame) + ".pov";
-    const std::string text = read_text(dir / file);
-    const std::size_t bolt = text.find("#if(RT_Mask=0)\n");
-    if (bolt == std::string::npos) continue;
+    if (!write_frame_without_bolt(dir, file)) continue;
     ++frames_with_bolts;
-    std::ofstream(dir / "frames" / "no_bolt.pov") << text.substr(0, bolt);
     const Image with = render(dir, file, "with_" + std::to_string(frame), 320, "");
     const Image without = render(dir, "frames/no_bolt.pov", "without", 320, "");
     ASSERT_EQ(with.rgb.size(), without.rgb.size());
@@ -187,10 +195,8 @@ TEST(ExampleFigures, ThunderstormBoltBringsTheCameraMoreLightThanTheWholeStreet)
   if (!have_povray()) GTEST_SKIP() << "povray is not installed";
   const fs::path dir = work_dir("thunderstorm_light");
   export_example("thunderstorm", dir, "13");
-  const std::string text = read_text(dir / "frames" / "frame_0013.pov");
-  const std::size_t bolt = text.find("#if(RT_Mask=0)\n");
-  ASSERT_NE(bolt, std::string::npos) << "frame 13 should draw the forced strike's bolt";
-  std::ofstream(dir / "frames" / "no_bolt.pov") << text.substr(0, bolt);
+  ASSERT_TRUE(write_frame_without_bolt(dir, "frames/frame_0013.pov"))
+      << "frame 13 should draw the forced strike's bolt";
   const Image with = render(dir, "frames/frame_0013.pov", "with", 320, "", true);
   const Image without = render(dir, "frames/no_bolt.pov", "without", 320, "", true);
   ASSERT_EQ(with.rgb.size(), without.rgb.size());
