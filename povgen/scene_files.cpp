@@ -123,20 +123,21 @@ std::string environment_with_plate_text(const ExportParams& look, const std::str
 // The lightning channel's look, called by the frames for each group of bolt segments (the main
 // channel, the branches of one generation) with its brightness B (~0..1, sim::Bolt). Scene-
 // linear for an HDR frame: the channel itself (600·B), and around it the light the rain and
-// cloud scatter out of it, 2·B at its centre
-// falling off as exp(−(2.5·b/R)²) with the distance b from the axis, R the glow cylinder's
-// radius. The glow is drawn on the surface of that cylinder: POV-Ray's aoi pattern gives the
-// angle between ray and surface, and sin(aoi) is b/R (v = 1 − asin(b/R)/π entering,
-// asin(b/R)/π leaving, hence the symmetric map); each of the two surfaces a ray crosses adds half.
-// 0.1 % opaque, it dims the sky behind by that and emits 1/1000 of its emission.
+// cloud scatter out of it, 2·B at its centre falling off as exp(−(2.5·b/R)²) with the distance
+// b from the axis, R the glow cylinder's radius. The glow is drawn on the surface of that
+// cylinder: POV-Ray's aoi pattern gives the angle between ray and surface, and sin(aoi) is b/R
+// (v = 1 − asin(b/R)/π entering, asin(b/R)/π leaving, hence the symmetric map); each of the two
+// surfaces a ray crosses adds half. 0.1 % opaque, it dims the sky behind by that and emits
+// 1/1000 of its emission.
+//
 // Why 600: a return stroke radiates about 870 J per metre of channel (Krider, Dawson and Uman
 // 1968, 0.4–1.1 µm). Over a 1/50 s exposure, 300 m of it seen from 500 m through heavy rain
 // (37 % transmitted) then brings the camera some tens of times the light of a street lamp 20 m
-// away. At 60·B the thunderstorm's bolt brought its frame an eighth of the light of everything
-// else in it, a white line that lit nothing; at 600·B, as much again as everything else, its
-// glare (the camera's bloom) glows around it and the wet road mirrors it. Both blind viewers
-// chose it (4/10 against 3/10 each): "the bolt lights up the fog around it and is faintly
-// reflected in the wet road". The estimate would allow brighter still.
+// away. At 60·B the thunderstorm's bolt added 0.15 of the light of everything else in its frame,
+// a white line that lit nothing; at 600·B, 1.4 times everything else (BENCHMARKS.md), its glare
+// (the camera's bloom) glows around it and the wet road mirrors it. Both blind viewers chose it
+// (4/10 against 3/10 each): "the bolt lights up the fog around it and is faintly reflected in
+// the wet road". The estimate would allow brighter still.
 std::string bolt_macros_text() {
   return "#macro RT_BoltCore(B)\n"
          " texture{pigment{rgb<0.86,0.9,1>} finish{ambient 0 diffuse 0 emission 600*B}}\n#end\n"
