@@ -77,7 +77,7 @@ class SlurmRender : public ::testing::Test {
     s_cluster_dir = testing::fresh_test_dir("slurm_cluster");
     ProcessSpec start;
     start.argv = {recipe().string(), "start", s_cluster_dir.string()};
-    start.log_path = s_cluster_dir.string() + ".log";
+    start.log_path = s_cluster_dir / "start.log";
     s_started = ChildProcess{start}.wait() == 0;
     if (s_started) ::setenv("SLURM_CONF", (s_cluster_dir / "slurm.conf").c_str(), 1);
     s_ready = s_started && cluster_up();
