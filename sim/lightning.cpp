@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 #include <numbers>
 
+#include "sim/perpendicular_basis.h"
 #include "sim/random.h"
 
 namespace raintrace::sim {
@@ -61,15 +62,13 @@ void split_into_kinks(glm::dvec3 a, glm::dvec3 b, const BoltSegment& like, doubl
     return;
   }
   const glm::dvec3 along = (b - a) / length;
-  const glm::dvec3 helper = std::abs(along.y) < 0.9 ? glm::dvec3{0, 1, 0} : glm::dvec3{1, 0, 0};
-  const glm::dvec3 u = glm::normalize(glm::cross(along, helper));
-  const glm::dvec3 v = glm::cross(along, u);
+  const PerpendicularBasis across = perpendicular_basis(along);
   // Box-Muller: two independent standard normals from two uniforms.
   const double r =
       std::sqrt(-2.0 * std::log(1.0 - uniform(seed, Stream::bolt_kinks, strike, counter++)));
   const double phi = 2.0 * std::numbers::pi * uniform(seed, Stream::bolt_kinks, strike, counter++);
-  glm::dvec3 mid =
-      0.5 * (a + b) + kKinkSigma * length * r * (std::cos(phi) * u + std::sin(phi) * v);
+  glm::dvec3 mid = 0.5 * (a + b) +
+                   kKinkSigma * length * r * (std::cos(phi) * across.u + std::sin(phi) * across.v);
   mid.y = std::max(mid.y, ground_y);
   split_into_kinks(a, mid, like, ground_y, seed, strike, counter, out);
   split_into_kinks(mid, b, like, ground_y, seed, strike, counter, out);

@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 #include <numbers>
 
+#include "sim/perpendicular_basis.h"
 #include "sim/random.h"
 
 namespace raintrace::sim {
@@ -28,12 +29,10 @@ Wind::Wind(const WindParams& params, std::uint64_t seed)
     const double cz = 2.0 * u(0) - 1.0, az = 2.0 * std::numbers::pi * u(1);
     const double sz = std::sqrt(1.0 - cz * cz);
     const glm::dvec3 dir{sz * std::cos(az), cz, sz * std::sin(az)};
-    const glm::dvec3 helper = std::abs(dir.y) < 0.9 ? glm::dvec3{0, 1, 0} : glm::dvec3{1, 0, 0};
-    const glm::dvec3 e1 = glm::normalize(glm::cross(dir, helper));
-    const glm::dvec3 e2 = glm::cross(dir, e1);
+    const PerpendicularBasis across = perpendicular_basis(dir);
     const double ap = 2.0 * std::numbers::pi * u(2);
     m_modes.k[m] = glm::vec3(dir * k);
-    m_modes.amp[m] = glm::vec3((std::cos(ap) * e1 + std::sin(ap) * e2) * amp);
+    m_modes.amp[m] = glm::vec3((std::cos(ap) * across.u + std::sin(ap) * across.v) * amp);
     m_modes.phase[m] = static_cast<float>(2.0 * std::numbers::pi * u(3));
   }
   m_modes.drift = params.velocity_m_per_s;
