@@ -5,19 +5,14 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "film/documented_width.h"
 #include "film/pixel_noise.h"
 
 namespace raintrace::film {
 
-namespace {
-
-constexpr double kReferenceWidth = 1920.0;
-
-}  // namespace
-
 double grain_rms(double strength, int width, double v) {
   const double c = std::clamp(v, 0.0, 1.0);
-  return strength * (width / kReferenceWidth) * 2.0 * std::sqrt(c * (1.0 - c));
+  return at_width(strength, width) * 2.0 * std::sqrt(c * (1.0 - c));
 }
 
 void apply_grain(RgbImage& image, double strength, std::uint64_t seed, std::int64_t frame) {

@@ -5,13 +5,13 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "film/documented_width.h"
 #include "film/pixel_noise.h"
 
 namespace raintrace::film {
 
 namespace {
 
-constexpr double kReferenceWidth = 1920.0;
 constexpr double kMidGrey = 0.18;
 /// Added to the seed for channel c (times c + 1): each channel draws its own noise, and none
 /// draws the grain's (which uses the seed itself).
@@ -20,7 +20,7 @@ constexpr std::uint32_t kChannelSalt = 0x9E3779B9u;
 }  // namespace
 
 double sensor_noise_rms(double strength, int width, double linear) {
-  const double s = strength * (width / kReferenceWidth);
+  const double s = at_width(strength, width);
   const double electron = kMidGrey * s * s;  // the value of one photoelectron
   return std::sqrt(electron * std::max(0.0, linear) +
                    electron * electron * kReadNoiseElectrons * kReadNoiseElectrons);

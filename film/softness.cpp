@@ -5,11 +5,12 @@
 #include <stdexcept>
 #include <vector>
 
+#include "film/documented_width.h"
+
 namespace raintrace::film {
 
 namespace {
 
-constexpr double kReferenceWidth = 1920.0;
 /// Below this σ the outer taps weigh under 1e-87: nothing to blur.
 constexpr double kNegligibleSigma = 0.05;
 
@@ -53,9 +54,7 @@ void blur_pass(const RgbImage& in, RgbImage& out, const std::vector<float>& taps
 
 }  // namespace
 
-double softness_sigma_px(double softness, int width) {
-  return softness * (width / kReferenceWidth);
-}
+double softness_sigma_px(double softness, int width) { return at_width(softness, width); }
 
 void apply_softness(RgbImage& image, double softness) {
   if (!(softness >= 0.0 && softness <= kMaxSoftness)) {
