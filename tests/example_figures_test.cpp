@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
+#include "tests/support/command.h"
 
 namespace raintrace {
 namespace {
@@ -57,18 +57,12 @@ Image read_image(const fs::path& path) {
   return image;
 }
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test_support::read_text;
 
 // A fresh folder for `raintrace export` (which refuses a non-empty folder it did not make),
 // unique to this process: sessions may share the temporary directory.
 fs::path work_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() /
-                       ("raintrace_example_figures_test_" + std::to_string(::getpid())) / name;
+  const fs::path dir = test_support::process_scratch_path("raintrace_example_figures_test") / name;
   fs::remove_all(dir);
   fs::create_directories(dir.parent_path());
   return dir;
