@@ -28,7 +28,11 @@ if [[ $unformatted != 0 ]]; then
 fi
 
 step "sanitized build (ASan + UBSan)"
-"$root/scripts/build.sh" "$root/build-asan" -DRAINTRACE_SANITIZE=ON -DRAINTRACE_BUILD_BENCH=OFF
+# -O1 -g1 instead of the build type's -O2 -g: half the compile time under the sanitizers (1434
+# against 2792 CPU s for the whole build), the same test run time, and the line tables the
+# sanitizers' stack traces need. Here, not in the option: a sanitized Debug build keeps its -g.
+"$root/scripts/build.sh" "$root/build-asan" -DRAINTRACE_SANITIZE=ON -DRAINTRACE_BUILD_BENCH=OFF \
+  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG"
 step "sanitized tests"
 # All but the suites that run whole examples at a user's size (the documents' commands and the
 # examples' figures): under ASan they took 2070 of the 3270 test-seconds in a fresh-clone run,
