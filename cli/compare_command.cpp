@@ -35,7 +35,7 @@ struct CompareArgs {
   std::string look = "medium-high-contrast";
 };
 
-constexpr const char* kFooter = R"(
+constexpr const char* kCompareFooter = R"(
 Thresholds follow OpenImageIO's idiff (ImageBufAlgo::compare). Values are per channel of each
 pixel, normalised to [0, 1] (8-bit: 1/255 = 0.0039); alpha is compared like any channel. A value
 fails when |A-B| > --fail and |A-B| > --fail-relative * (|A|+|B|)/2; a pixel fails when any
@@ -94,7 +94,7 @@ Command register_compare_command(CLI::App& app) {
   auto args = std::make_shared<CompareArgs>();
   auto* sub = app.add_subcommand(
       "compare", "Compare two images or two folders of frames (A reference, B candidate)");
-  sub->footer(kFooter);
+  sub->footer(kCompareFooter);
   sub->add_option("A", args->a, "Reference image or folder")->required();
   sub->add_option("B", args->b, "Candidate image or folder")->required();
   auto& t = args->thresholds;

@@ -61,7 +61,7 @@ struct RenderArgs {
   std::optional<std::uint64_t> seed;  ///< none: the scene file's seed
 };
 
-constexpr const char* kFooter = R"(
+constexpr const char* kRenderFooter = R"(
 Examples:
   raintrace render examples/default.toml -o out/default            # everything, resumable
   raintrace render examples/default.toml -o out/default --frames 1-24   # a range (or 7)
@@ -378,7 +378,7 @@ Command register_render_command(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   auto* sub = app.add_subcommand(
       "render", "Simulate, export and ray-trace a scene with POV-Ray (local or Slurm)");
-  sub->footer(kFooter);
+  sub->footer(kRenderFooter);
   sub->add_option("scene", args->scene, "Scene file (.toml), or an exported output folder");
   sub->add_option("-o,--output", args->out, "Output folder (created; reused to resume)");
   sub->add_option("--frames", args->frames, "Frame range A-B or one frame N (default: all)");

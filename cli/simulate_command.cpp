@@ -39,7 +39,7 @@ struct SimulateArgs {
   LimitArgs limits;
 };
 
-constexpr const char* kFooter = R"(
+constexpr const char* kSimulateFooter = R"(
 Examples:
   raintrace simulate examples/default.toml                     # all frames, one-line summary
   raintrace simulate examples/default.toml --frames 1-24       # frames 1 to 24 (or one: 7)
@@ -217,7 +217,7 @@ Command register_simulate_command(CLI::App& app) {
   auto args = std::make_shared<SimulateArgs>();
   auto* sub = app.add_subcommand(
       "simulate", "Simulate a scene without rendering and print (or save) its rain statistics");
-  sub->footer(kFooter);
+  sub->footer(kSimulateFooter);
   sub->add_option("scene", args->scene, "Scene file (TOML, see docs/scene-format.md)")->required();
   sub->add_option("--frames", args->frames, "Frames to count: A-B or N (default: all)");
   add_seed_option(*sub, args->seed);

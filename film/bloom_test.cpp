@@ -10,14 +10,12 @@
 #include <stdexcept>
 #include <vector>
 
+#include "film/image_sums_test_support.h"
+
 namespace raintrace::film {
 namespace {
 
-double channel_sum(const RgbImage& image, int c) {
-  double sum = 0.0;
-  for (std::size_t i = 0; i < image.pixel_count(); ++i) sum += image.pixels[i * 3 + c];
-  return sum;
-}
+using testing::channel_sum;
 
 /// A dark night frame: a dim gradient with a few lamps 1000× brighter, one in a corner and one
 /// on the last column (where odd pyramid levels pad and fold).

@@ -10,16 +10,14 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "film/image_sums_test_support.h"
+
 namespace raintrace::film {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-double channel_sum(const RgbImage& image, int c) {
-  double sum = 0.0;
-  for (std::size_t i = 0; i < image.pixel_count(); ++i) sum += image.pixels[i * 3 + std::size_t(c)];
-  return sum;
-}
+using testing::channel_sum;
 
 /// A black frame with one pixel of `light` in every channel at its centre.
 RgbImage point_light(int size, float light) {

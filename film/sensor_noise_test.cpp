@@ -9,27 +9,19 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "film/image_sums_test_support.h"
+
 namespace raintrace::film {
 namespace {
 
-constexpr int kSide = 512;  // 262 144 pixels: statistics below are checked against this N
+using testing::departure_from;
+using testing::kStatsSide;
 
-struct Stats {
-  double mean = 0.0;
-  double rms = 0.0;
-};
 /// Mean and RMS of (out − L) over channel c of a flat image of scene-linear value L.
-Stats noise_stats(float linear, double strength, int c) {
-  RgbImage image(kSide, kSide, linear);
+testing::Departure noise_stats(float linear, double strength, int c) {
+  RgbImage image(kStatsSide, kStatsSide, linear);
   apply_sensor_noise(image, strength, 7, 3);
-  double sum = 0.0, sum2 = 0.0;
-  for (std::size_t i = 0; i < image.pixel_count(); ++i) {
-    const double d = image.pixels[i * 3 + std::size_t(c)] - double(linear);
-    sum += d;
-    sum2 += d * d;
-  }
-  const double n = double(image.pixel_count());
-  return {sum / n, std::sqrt(sum2 / n)};
+  return departure_from(image, linear, c);
 }
 
 TEST(SensorNoise, RmsIsShotNoiseOverAReadFloor) {
@@ -53,10 +45,10 @@ TEST(SensorNoise, IsZeroMeanWithTheContractedRmsInEveryChannel) {
   // grain_test.cpp: the mean within 8/512 of the RMS (clumping doubles the independent 4/512),
   // the RMS within 1 %.
   for (float linear : {0.18f, 0.02f, 2.0f}) {
-    const double expected = sensor_noise_rms(0.2, kSide, linear);
+    const double expected = sensor_noise_rms(0.2, kStatsSide, linear);
     for (int c = 0; c < 3; ++c) {
-      const Stats s = noise_stats(linear, 0.2, c);
-      EXPECT_NEAR(s.mean, 0.0, 8.0 * expected / kSide) << "L " << linear << " channel " << c;
+      const testing::Departure s = noise_stats(linear, 0.2, c);
+      EXPECT_NEAR(s.mean, 0.0, 8.0 * expected / kStatsSide) << "L " << linear << " channel " << c;
       EXPECT_NEAR(s.rms, expected, 0.01 * expected) << "L " << linear << " channel " << c;
     }
   }
@@ -66,12 +58,12 @@ TEST(SensorNoise, IsZeroMeanWithTheContractedRmsInEveryChannel) {
 // draws (standard error ≈ 2/√N with the clumping, 0.004; allow 0.02). Neighbours within a
 // channel share it as pixel_noise.h says (8/18 across a side).
 TEST(SensorNoise, ChannelsAreIndependentAndNeighboursClump) {
-  RgbImage image(kSide, kSide, 0.5f);
+  RgbImage image(kStatsSide, kStatsSide, 0.5f);
   apply_sensor_noise(image, 0.3, 1, 1);
   const auto correlation = [&](int c1, int c2, int dx) {
     double sum = 0.0, var1 = 0.0, var2 = 0.0;
-    for (int y = 0; y < kSide; ++y) {
-      for (int x = 0; x + dx < kSide; ++x) {
+    for (int y = 0; y < kStatsSide; ++y) {
+      for (int x = 0; x + dx < kStatsSide; ++x) {
         const double a = image.at(x, y, c1) - 0.5, b = image.at(x + dx, y, c2) - 0.5;
         sum += a * b;
         var1 += a * a;

@@ -8,14 +8,12 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "film/image_sums_test_support.h"
+
 namespace raintrace::film {
 namespace {
 
-double channel_sum(const RgbImage& image, int c) {
-  double sum = 0.0;
-  for (std::size_t i = 0; i < image.pixel_count(); ++i) sum += image.pixels[i * 3 + std::size_t(c)];
-  return sum;
-}
+using testing::channel_sum;
 
 TEST(Softness, SigmaIsGivenAt1920PixelsAndScalesWithTheWidth) {
   EXPECT_DOUBLE_EQ(softness_sigma_px(1.5, 1920), 1.5);

@@ -15,10 +15,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const char* quality_name(povgen::Quality q) {
-  return q == povgen::Quality::final ? "final" : "preview";
-}
-
 std::string short_hash(const std::string& hash) {
   return hash.empty() ? std::string{"none"} : hash.substr(0, 8) + "…";
 }
@@ -35,8 +31,8 @@ std::vector<std::string> differences(const FolderIdentity& there, const FolderId
   if (there.fps != here.fps)
     out.push_back(fmt::format("fps {} there, {} here", there.fps, here.fps));
   if (there.quality != here.quality) {
-    out.push_back(fmt::format("quality {} there, {} here", quality_name(there.quality),
-                              quality_name(here.quality)));
+    out.push_back(fmt::format("quality {} there, {} here", povgen::quality_name(there.quality),
+                              povgen::quality_name(here.quality)));
   }
   if (there.masks != here.masks) {
     out.push_back(fmt::format("masks {} there, {} here", there.masks ? "on" : "off",

@@ -21,10 +21,6 @@ using nlohmann::json;
 constexpr FrameStatus kStatuses[] = {FrameStatus::exported, FrameStatus::rendering,
                                      FrameStatus::rendered, FrameStatus::failed};
 
-const char* quality_name(povgen::Quality quality) {
-  return quality == povgen::Quality::final ? "final" : "preview";
-}
-
 template <typename T>
 T field(const json& object, const char* key, const T& fallback) {
   const auto it = object.find(key);
@@ -212,7 +208,7 @@ std::string to_json(const Manifest& m) {
                  {"width", id.width},
                  {"height", id.height},
                  {"fps", id.fps},
-                 {"quality", quality_name(id.quality)},
+                 {"quality", std::string(povgen::quality_name(id.quality))},
                  {"masks", id.masks},
                  {"develop", develop_spec_to_json(m.develop)},
                  {"shared_hash", m.shared_hash},

@@ -72,6 +72,10 @@ enum class Quality {
 };
 /// Scene-file names of Quality, in the order of its values.
 inline constexpr std::string_view kQualityNames[] = {"preview", "final"};
+/// The scene-file name of a quality ("preview", "final").
+inline constexpr std::string_view quality_name(Quality quality) {
+  return kQualityNames[static_cast<std::size_t>(quality)];
+}
 
 /// How a lens opening (ExportParams::aperture_m) blurs the picture.
 enum class FocalBlur {

@@ -13,11 +13,8 @@ bool ground_applies(const ExportParams& look) { return look.ground.puddles.cover
 std::string ground_scene_text(const ExportParams& look) {
   if (!ground_applies(look)) return {};
   const sim::Camera& c = look.camera;
-  auto vec = [](const glm::dvec3& v) {
-    return "<" + format_number(v.x) + "," + format_number(v.y) + "," + format_number(v.z) + ">";
-  };
   std::string text;
-  text += "#declare RT_GroundLookAt=" + vec(c.look_at) + ";\n";
+  text += "#declare RT_GroundLookAt=" + format_vector(c.look_at) + ";\n";
   text += "#declare RT_GroundAngle=" + format_number(c.fov_deg) + ";\n";
   text += "#declare RT_GroundWidth=" + std::to_string(look.width) + ";\n";
   text += "#declare RT_GroundHeight=" + std::to_string(look.height) + ";\n";

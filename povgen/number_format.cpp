@@ -104,4 +104,8 @@ std::string format_number(double value) {
   return text;
 }
 
+std::string format_vector(const glm::dvec3& v) {
+  return "<" + format_number(v.x) + "," + format_number(v.y) + "," + format_number(v.z) + ">";
+}
+
 }  // namespace raintrace::povgen

@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <glm/vec3.hpp>
 #include <string>
 
 namespace raintrace::povgen {
@@ -45,5 +46,7 @@ void append_index(std::string& text, std::uint64_t value);
 
 /// The text append_number() appends, as a string: for one-off values and tests.
 std::string format_number(double value);
+/// A POV-Ray vector of three such numbers: "<x,y,z>".
+std::string format_vector(const glm::dvec3& v);
 
 }  // namespace raintrace::povgen

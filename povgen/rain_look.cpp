@@ -8,14 +8,6 @@
 #include "sim/rain_medium.h"
 
 namespace raintrace::povgen {
-namespace {
-
-std::string vec(const glm::dvec3& v) {
-  return "<" + format_number(v.x) + "," + format_number(v.y) + "," + format_number(v.z) + ">";
-}
-
-}  // namespace
-
 std::string drop_lobes_text() {
   const sim::PovrayLobes lobes = sim::fit_povray_lobes(sim::water_drop_scattering());
   return "#declare RT_DropBrilliance=" + format_number(lobes.brilliance) +
@@ -38,8 +30,8 @@ std::string rain_medium_text(const ExportParams& look) {
           format_number(sigma) + " /m.\n";
   text += "#declare RT_RainExtinction=" + format_number(sigma) + ";\n";
   text += "#macro RT_RainMedium()\n";
-  text += "intersection{\n sphere{" + vec(eye) + "," + format_number(kRainMediumRadiusM) +
-          "}\n plane{" + vec(-forward) + "," + format_number(offset) + "}\n";
+  text += "intersection{\n sphere{" + format_vector(eye) + "," + format_number(kRainMediumRadiusM) +
+          "}\n plane{" + format_vector(-forward) + "," + format_number(offset) + "}\n";
   // No diffuse, no ambient: POV-Ray then skips the container surface's light loop.
   text += " hollow texture{pigment{rgbt 1} finish{ambient 0 diffuse 0}}\n";
   // The medium is smooth and thin (τ ≈ 0.07 over 200 m at 5 mm/h): one sample per ray at the

@@ -15,14 +15,10 @@
 namespace raintrace::povgen {
 namespace {
 
-std::string vec(const glm::dvec3& v) {
-  return "<" + format_number(v.x) + "," + format_number(v.y) + "," + format_number(v.z) + ">";
-}
-
 std::string fog_text(const FogParams& fog, const sim::Camera& camera) {
   std::string text;
   if (fog.mode == FogMode::off || fog.density_per_m <= 0.0) return text;
-  const std::string colour = vec(glm::clamp(fog.colour, 0.0, 1.0));
+  const std::string colour = format_vector(glm::clamp(fog.colour, 0.0, 1.0));
   if (fog.mode == FogMode::ground) {
     // Ground fog: full density below the ground, thinning with height over depth_m. POV-Ray's
     // `distance` is where fog reaches 63 % (e^-1), i.e. 1 / extinction.
@@ -43,7 +39,7 @@ std::string fog_text(const FogParams& fog, const sim::Camera& camera) {
   // diffuse and no ambient: POV-Ray then skips its light loop.
   const double scattering = 0.7 * fog.density_per_m;
   const double absorption = 0.3 * fog.density_per_m;
-  text += "sphere{" + vec(camera.position) + "," + format_number(fog.depth_m) +
+  text += "sphere{" + format_vector(camera.position) + "," + format_number(fog.depth_m) +
           " hollow\n texture{pigment{rgbt 1} finish{ambient 0 diffuse 0}}\n"
           " interior{media{method 2 intervals 1 samples 8,8"
           " jitter 0\n  scattering{1,rgb " +
@@ -71,7 +67,7 @@ std::string focal_blur_text(const ExportParams& look) {
   if (!traces_focal_blur(look)) return {};
   const bool preview = look.quality == Quality::preview;
   return " aperture " + format_number(2.0 * look.aperture_m) + " blur_samples " +
-         (preview ? "4,16" : "32,256") + " focal_point " + vec(look.camera.look_at) +
+         (preview ? "4,16" : "32,256") + " focal_point " + format_vector(look.camera.look_at) +
          " confidence 0.95 variance " + (preview ? "1/2000" : "1/8000");
 }
 
@@ -99,7 +95,8 @@ std::string environment_with_plate_text(const ExportParams& look, const std::str
   text += "#if(RT_LightsOnly)\n";
   // Far beyond any rain or bolt, so everything the frame adds stands in front of it.
   text += "#declare RT_PlateDistance=10000;\n";
-  text += "#declare RT_PlateDir=vnormalize(" + vec(look.camera.look_at) + "-RT_CameraPosition);\n";
+  text += "#declare RT_PlateDir=vnormalize(" + format_vector(look.camera.look_at) +
+          "-RT_CameraPosition);\n";
   // POV-Ray's own look_at basis: right = sky × direction, up = direction × right.
   text += "#declare RT_PlateRight=vnormalize(vcross(y,RT_PlateDir));\n";
   text += "#declare RT_PlateUp=vcross(RT_PlateDir,RT_PlateRight);\n";
@@ -202,12 +199,12 @@ std::string scene_inc_text(const ExportParams& look) {
   // Overlapping transparent streaks and refraction in drops each cost a trace level; too few
   // levels leave black specks where rain is dense.
   text += "global_settings{assumed_gamma 1.0 max_trace_level 32 adc_bailout 0.004}\n";
-  text += "camera{perspective location " + vec(look.camera.position) + " look_at " +
-          vec(look.camera.look_at) + " right x*" + aspect + " up y angle " +
+  text += "camera{perspective location " + format_vector(look.camera.position) + " look_at " +
+          format_vector(look.camera.look_at) + " right x*" + aspect + " up y angle " +
           format_number(look.camera.fov_deg) + focal_blur_text(look) + "}\n";
   text += "#declare RT_LightningLight=" + format_number(look.lightning_light) + ";\n";
   text += bolt_macros_text();
-  text += "#declare RT_CameraPosition=" + vec(look.camera.position) + ";\n";
+  text += "#declare RT_CameraPosition=" + format_vector(look.camera.position) + ";\n";
   text += "#ifndef(RT_LightsOnly) #declare RT_LightsOnly=0; #end\n";
   text += "#if(RT_Mask)\nbackground{rgb 0}\n#else\n";
   text += "#declare RT_KeyLight=1;\n";

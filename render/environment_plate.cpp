@@ -18,18 +18,12 @@
 #include "povgen/output_folder.h"
 #include "render/povray_command.h"
 #include "render/process.h"
+#include "render/text_file.h"
 
 namespace raintrace::render {
 namespace {
 
 using output::image_is_complete;
-
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in{path, std::ios::binary};
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 bool plate_is_current(const std::filesystem::path& out, int width, int height,
                       const std::string& inputs_hash) {

@@ -13,6 +13,7 @@
 #include "render/environment_plate.h"
 #include "render/process.h"
 #include "render/test_folder.h"
+#include "render/text_file.h"
 
 namespace raintrace::render {
 namespace {
@@ -49,13 +50,6 @@ void expect_every_frame_rendered(const std::filesystem::path& dir, std::size_t f
     EXPECT_EQ(f.developed.source_hash, f.image.file_hash) << f.number;
   }
   EXPECT_TRUE(std::filesystem::is_empty(dir / "images/.tmp"));
-}
-
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in{path, std::ios::binary};
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 /// Every frame's POV-Ray log says (the test folder's #debug line) whether it drew the plate.

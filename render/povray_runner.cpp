@@ -14,6 +14,7 @@
 #include "output/disk_space.h"
 #include "output/image_check.h"
 #include "render/process.h"
+#include "render/text_file.h"
 
 namespace raintrace::render {
 namespace {
@@ -28,13 +29,6 @@ struct Running {
   int next_frame = 0;       // first frame of the span not yet promoted
   Clock::time_point since;  // start of next_frame's work (process start or last promotion)
 };
-
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in{path, std::ios::binary};
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();

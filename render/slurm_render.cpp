@@ -18,19 +18,13 @@
 #include "render/environment_plate.h"
 #include "render/process.h"
 #include "render/spans.h"
+#include "render/text_file.h"
 
 namespace raintrace::render {
 namespace {
 
 using nlohmann::json;
 using output::FolderState;
-
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in{path, std::ios::binary};
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 std::filesystem::path results_dir(const std::filesystem::path& out) {
   return out / "slurm" / "results";

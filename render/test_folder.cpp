@@ -12,6 +12,7 @@
 #include "output/test_dir.h"
 #include "povgen/content_hash.h"
 #include "render/process.h"
+#include "render/text_file.h"
 
 namespace raintrace::render::testing {
 namespace {
@@ -20,13 +21,6 @@ void write_file(const std::filesystem::path& path, const std::string& text) {
   std::filesystem::create_directories(path.parent_path());
   std::ofstream out{path, std::ios::binary};
   out << text;
-}
-
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in{path, std::ios::binary};
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 std::string frame_text(int frame, int spheres) {

@@ -13,7 +13,6 @@
 namespace raintrace::sim {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 /// Below this mean a Poisson count is drawn by inversion, above by its normal approximation
 /// (relative error of the variance under 1 %).
 constexpr double kPoissonExact = 50.0;
@@ -36,7 +35,8 @@ std::uint64_t poisson(double lambda, double u1, double u2) {
     }
     return k;
   }
-  const double normal = std::sqrt(-2.0 * std::log(1.0 - u1)) * std::cos(2.0 * kPi * u2);
+  const double normal =
+      std::sqrt(-2.0 * std::log(1.0 - u1)) * std::cos(2.0 * std::numbers::pi * u2);
   return static_cast<std::uint64_t>(std::max(0.0, std::round(lambda + std::sqrt(lambda) * normal)));
 }
 
@@ -44,7 +44,8 @@ std::uint64_t poisson(double lambda, double u1, double u2) {
 
 GroundDetail::GroundDetail(const Camera& camera)
     : m_eye(camera.position),
-      m_pixel_angle(2.0 * std::tan(camera.fov_deg * kPi / 360.0) / std::max(1, camera.width_px)) {}
+      m_pixel_angle(2.0 * std::tan(camera.fov_deg * std::numbers::pi / 360.0) /
+                    std::max(1, camera.width_px)) {}
 
 double GroundDetail::pixel_m(const glm::dvec3& p) const {
   return glm::length(p - m_eye) * m_pixel_angle;
@@ -65,7 +66,7 @@ ImpactSampler::ImpactSampler(const Camera& camera, double ground_y, const DropSi
       m_ground(ground_y),
       m_eye(camera.position) {
   const ViewVolume view(camera, 1e-3, kMaxDistance_m);
-  const double tan_h = std::tan(camera.fov_deg * kPi / 360.0);
+  const double tan_h = std::tan(camera.fov_deg * std::numbers::pi / 360.0);
   const double tan_v = tan_h / camera.aspect;
   // (p − eye)·(F·tan ∓ side) >= 0 on the inner side of each of the four planes.
   for (const double sign : {-1.0, 1.0}) {

@@ -10,8 +10,6 @@
 namespace raintrace::sim {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 struct Band {
   int waves;
   double wavenumber;  ///< in units of k0
@@ -31,7 +29,7 @@ constexpr double kSampleSpan = 40.0;
 PuddleField::PuddleField(const PuddleParams& params, std::uint64_t seed)
     : m_film_m(params.film_mm * 1e-3), m_depth_m(params.depth_mm * 1e-3) {
   if (!(params.coverage > 0.0)) return;
-  const double k0 = kPi / params.size_m;
+  const double k0 = std::numbers::pi / params.size_m;
   std::uint64_t term = 0;
   double variance = 0.0, slope_variance = 0.0;
   for (const Band& band : kBands) {
@@ -39,9 +37,9 @@ PuddleField::PuddleField(const PuddleParams& params, std::uint64_t seed)
       auto u = [&](int dim) { return uniform(seed, Stream::puddles, term, dim); };
       // Wavenumbers spread ±30 % around the band's so that no single wavelength dominates.
       const double k = band.wavenumber * k0 * (0.7 + 0.6 * u(0));
-      const double direction = 2.0 * kPi * u(1);
-      m_waves.push_back(
-          {k * std::cos(direction), k * std::sin(direction), 2.0 * kPi * u(2), band.weight});
+      const double direction = 2.0 * std::numbers::pi * u(1);
+      m_waves.push_back({k * std::cos(direction), k * std::sin(direction),
+                         2.0 * std::numbers::pi * u(2), band.weight});
       variance += 0.5 * band.weight * band.weight;
       // A cosine's slope along one horizontal direction has mean square a²k²/4 (cos² of the
       // angle to k averages 1/2, the cosine's own square 1/2).
@@ -73,7 +71,7 @@ double PuddleField::value(double x, double z) const {
   float f = 0.0f;
   for (const Wave& w : m_waves) {
     double phase = w.kx * x + w.kz * z + w.phase;
-    phase -= 2.0 * kPi * std::floor(phase * (0.5 / kPi));
+    phase -= 2.0 * std::numbers::pi * std::floor(phase * (0.5 / std::numbers::pi));
     f += static_cast<float>(w.amplitude) * std::cos(static_cast<float>(phase));
   }
   return f;

@@ -11,13 +11,12 @@
 namespace raintrace::sim {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 /// Kinematic viscosity of water at 20 °C, m²/s.
 constexpr double kKinematicViscosity = kWaterViscosity / kWaterDensity;
 /// Packet half-width in wavelengths: two crests and a trough stand out.
 constexpr double kPacketWidth = 0.6;
 /// The pixel filter's standard deviation, in pixel spans: exp(−(π/s·σ)²/2) = e⁻² at Nyquist.
-constexpr double kPixelSigma = 2.0 / kPi;
+constexpr double kPixelSigma = 2.0 / std::numbers::pi;
 /// The thin film's ripples live h²/ν, kept within [kFilmLifetimeMin, kFilmLifetimeMax] s.
 constexpr double kFilmLifetimeMin = 0.02;
 constexpr double kFilmLifetimeMax = 0.2;
@@ -29,7 +28,7 @@ double ripple_speed() {
 }
 
 double ripple_wavelength() {
-  return 2.0 * kPi * std::sqrt(kWaterSurfaceTension / (kWaterDensity * kGravity));
+  return 2.0 * std::numbers::pi * std::sqrt(kWaterSurfaceTension / (kWaterDensity * kGravity));
 }
 
 Ripple make_ripple(const glm::vec3& position, float diameter_m, double age_s, double water_depth_m,
@@ -55,12 +54,12 @@ Ripple make_ripple(const glm::vec3& position, float diameter_m, double age_s, do
 }
 
 double ripple_slope_rms(double rate_mm_per_h, double lifetime_s) {
-  const double k = 2.0 * kPi / ripple_wavelength();
+  const double k = 2.0 * std::numbers::pi / ripple_wavelength();
   const double w = kPacketWidth * ripple_wavelength();
   const double alpha = kRippleAmplitudePerDiameter;
   const double water_m_per_s = rate_mm_per_h * 1e-3 / 3600.0;
-  const double mean_square = std::pow(kPi, 1.5) * k * k * alpha * alpha * w * lifetime_s / 5.0 *
-                             (6.0 / kPi) * water_m_per_s;
+  const double mean_square = std::pow(std::numbers::pi, 1.5) * k * k * alpha * alpha * w *
+                             lifetime_s / 5.0 * (6.0 / std::numbers::pi) * water_m_per_s;
   return std::sqrt(mean_square);
 }
 
@@ -97,7 +96,7 @@ bool RippleRing::point(double x, double z, const PixelSpan& span, Point& p) cons
   // Outside the packet first: most points a ring's bounding box asks about are (povgen draws
   // every pixel of it), and the exponential below is most of the cost.
   if (std::abs(p.xi) > 3.0 * w) return false;
-  const double k = 2.0 * kPi / ripple_wavelength();
+  const double k = 2.0 * std::numbers::pi / ripple_wavelength();
   // cos θ between the radius (the wave's direction here) and the line of sight.
   const double cos_t = p.r > 1e-9 ? (p.dx * span.dir_x + p.dz * span.dir_z) / p.r : 1.0;
   const double sigma2 = kPixelSigma * kPixelSigma *
@@ -111,7 +110,7 @@ bool RippleRing::point(double x, double z, const PixelSpan& span, Point& p) cons
 double RippleRing::height_at(double x, double z, const PixelSpan& span) const {
   Point p;
   if (!point(x, z, span, p)) return 0.0;
-  const double k = 2.0 * kPi / ripple_wavelength();
+  const double k = 2.0 * std::numbers::pi / ripple_wavelength();
   return p.gain * std::cos(k * p.xi);
 }
 
@@ -119,7 +118,7 @@ RippleSample RippleRing::sample_at(double x, double z, const PixelSpan& span) co
   RippleSample s;
   Point p;
   if (!point(x, z, span, p)) return s;
-  const double k = 2.0 * kPi / ripple_wavelength();
+  const double k = 2.0 * std::numbers::pi / ripple_wavelength();
   const double w = kPacketWidth * ripple_wavelength();
   const double c = std::cos(k * p.xi), sn = std::sin(k * p.xi);
   s.height = p.gain * c;

@@ -12,14 +12,13 @@
 namespace raintrace::sim {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 /// Bai et al.'s proportionality constant between droplet count and (We/We_c − 1).
 constexpr double kDropletsPerExcess = 5.0;
 /// Share of the drop's speed along the surface that the droplets keep.
 constexpr double kTangentialShare = 0.6;
 /// Ejection elevation above the surface, radians: uniform in [5°, 50°].
-constexpr double kElevationMin = 5.0 * kPi / 180.0;
-constexpr double kElevationMax = 50.0 * kPi / 180.0;
+constexpr double kElevationMin = 5.0 * std::numbers::pi / 180.0;
+constexpr double kElevationMax = 50.0 * std::numbers::pi / 180.0;
 /// Flight integration step, s: a tenth of the drag relaxation time v_t/g of the smallest
 /// droplets (~0.1 mm: 22–28 ms), and fixed, so the result does not depend on the frame rate.
 constexpr double kFlightStep = 2e-3;
@@ -35,7 +34,9 @@ double unit(std::uint64_t seed, std::uint64_t key, std::uint64_t b) {
 }
 
 /// Kinetic energy of a drop of diameter D at speed v, J.
-double kinetic_energy(double d, double v) { return kPi / 12.0 * kWaterDensity * d * d * d * v * v; }
+double kinetic_energy(double d, double v) {
+  return std::numbers::pi / 12.0 * kWaterDensity * d * d * d * v * v;
+}
 
 /// Points of the midpoint rule for the mean of m·ln²(D/d) over the droplet distribution.
 constexpr int kQuadrature = 64;
@@ -112,8 +113,8 @@ CrownSplash crown_splash(const SplashParams& params, const ImpactInput& impact,
   const double e_in = kinetic_energy(d, vn);
   const double k_ratio_inverse = 1.0 / ratio;  // = E_k at the threshold / E_k (K ∝ v²)
   const double dissipated = std::max(0.8, k_ratio_inverse) * e_in;
-  const double surface_in = kWaterSurfaceTension * kPi * d * d;
-  const double surface_out = c.expected_droplets * kWaterSurfaceTension * kPi * 2.0 *
+  const double surface_in = kWaterSurfaceTension * std::numbers::pi * d * d;
+  const double surface_out = c.expected_droplets * kWaterSurfaceTension * std::numbers::pi * 2.0 *
                              c.mean_diameter_m * c.mean_diameter_m;
   c.kinetic_energy_j = e_in + surface_in - surface_out - dissipated;
   if (c.kinetic_energy_j <= 0.0) {
@@ -129,7 +130,8 @@ CrownSplash crown_splash(const SplashParams& params, const ImpactInput& impact,
     const double density = std::exp(-di / c.mean_diameter_m);
     const double log_ratio = std::log(d / di);
     weight_sum += density;
-    moment += density * kPi / 6.0 * kWaterDensity * di * di * di * log_ratio * log_ratio;
+    moment +=
+        density * std::numbers::pi / 6.0 * kWaterDensity * di * di * di * log_ratio * log_ratio;
   }
   c.speed_scale = std::sqrt(2.0 * c.kinetic_energy_j / (c.expected_droplets * moment / weight_sum));
   const double drawn = std::floor(c.expected_droplets + unit(seed, impact.key, kCountDim));
@@ -146,7 +148,7 @@ Droplet crown_droplet(const CrownSplash& crown, const ImpactInput& impact, int k
   const double speed = crown.speed_scale * std::log(d / out.diameter_m);
   const double elevation =
       kElevationMin + (kElevationMax - kElevationMin) * unit(seed, impact.key, droplet_dim(k, 1));
-  const double azimuth = 2.0 * kPi * unit(seed, impact.key, droplet_dim(k, 2));
+  const double azimuth = 2.0 * std::numbers::pi * unit(seed, impact.key, droplet_dim(k, 2));
   const double horizontal = speed * std::cos(elevation);
   out.velocity = glm::vec3(static_cast<float>(horizontal * std::cos(azimuth)),
                            static_cast<float>(speed * std::sin(elevation)),
