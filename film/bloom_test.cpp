@@ -15,8 +15,6 @@
 namespace raintrace::film {
 namespace {
 
-using testing::channel_sum;
-
 /// A dark night frame: a dim gradient with a few lamps 1000× brighter, one in a corner and one
 /// on the last column (where odd pyramid levels pad and fold).
 RgbImage night_frame(int w, int h) {
@@ -100,8 +98,8 @@ TEST(Bloom, ConservesEveryChannelsEnergyWithLampsAtTheEdges) {
     for (double k : {0.04, 1.0}) {
       const RgbImage out = bloom(in, k);
       for (int c = 0; c < 3; ++c) {
-        const double before = channel_sum(in, c);
-        EXPECT_NEAR(channel_sum(out, c), before, 3e-5 * before)
+        const double before = testing::channel_sum(in, c);
+        EXPECT_NEAR(testing::channel_sum(out, c), before, 3e-5 * before)
             << w << "x" << h << " k=" << k << " channel " << c;
       }
     }

@@ -17,8 +17,6 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-using testing::channel_sum;
-
 /// A black frame with one pixel of `light` in every channel at its centre.
 RgbImage point_light(int size, float light) {
   RgbImage image(size, size);
@@ -116,7 +114,7 @@ TEST(DiffractionSpikes, APointKeepsItsLightAndLosesWhatItsRaysCarry) {
   apply_diffraction_spikes(image, iris, 50.0);
   const SpikeShare share = spike_share_beyond_one_pixel(iris, 50.0, 801);
   for (int c = 0; c < 3; ++c) {
-    EXPECT_NEAR(channel_sum(image, c), 1e3, 0.01) << "channel " << c;
+    EXPECT_NEAR(testing::channel_sum(image, c), 1e3, 0.01) << "channel " << c;
     const double kept = image.at(400, 400, c) / 1e3;
     EXPECT_NEAR(kept, 1.0 - 2.0 * share.rgb[c], 0.002) << "channel " << c;
   }
@@ -133,7 +131,7 @@ TEST(DiffractionSpikes, RaysLeavingTheFrameTakeTheirLight) {
   for (int c = 0; c < 3; ++c) image.at(50, 2, c) = 1e5f;
   apply_diffraction_spikes(image, iris, 50.0);
   const double share = spike_share_beyond_one_pixel(iris, 50.0, 101).rgb[1];
-  const double lost = 1e5 - channel_sum(image, 1);
+  const double lost = 1e5 - testing::channel_sum(image, 1);
   EXPECT_GT(lost, 0.99 * 1e5 * share / 6 / 2.5);
   EXPECT_LT(lost, 1e5 * 2 * share);
 }

@@ -12,14 +12,11 @@
 namespace raintrace::film {
 namespace {
 
-using testing::departure_from;
-using testing::kStatsSide;
-
 /// Mean and RMS of (out − v) over channel 0 of a flat image of grey v.
 testing::Departure grain_stats(float v, double strength, std::uint64_t seed, std::int64_t frame) {
-  RgbImage image(kStatsSide, kStatsSide, v);
+  RgbImage image(testing::kStatsSide, testing::kStatsSide, v);
   apply_grain(image, strength, seed, frame);
-  return departure_from(image, v, 0);
+  return testing::departure_from(image, v, 0);
 }
 
 TEST(Grain, RmsFollowsTheBooleanModelAndSelwynsLaw) {
@@ -42,9 +39,9 @@ TEST(Grain, IsZeroMeanWithTheContractedRms) {
   // times the RMS. The sample RMS has relative standard error ≈ √((κ − 1) / 4N) for independent
   // values, κ ≤ 3: 0.14 %, a few times that with the correlation; allow 1 %.
   for (float v : {0.5f, 0.2f, 0.85f}) {
-    const double expected_rms = grain_rms(0.1, kStatsSide, v);
+    const double expected_rms = grain_rms(0.1, testing::kStatsSide, v);
     const testing::Departure s = grain_stats(v, 0.1, 7, 3);
-    EXPECT_NEAR(s.mean, 0.0, 8.0 * expected_rms / kStatsSide) << "grey " << v;
+    EXPECT_NEAR(s.mean, 0.0, 8.0 * expected_rms / testing::kStatsSide) << "grey " << v;
     EXPECT_NEAR(s.rms, expected_rms, 0.01 * expected_rms) << "grey " << v;
   }
 }
@@ -71,12 +68,12 @@ TEST(Grain, SameSeedAndFrameGiveIdenticalGrainOthersDiffer) {
 // overlap). A correlation coefficient over N samples has standard error ≈ 1/√N ≈ 0.002 when
 // independent; allow 0.02 (the sums here run over correlated pairs).
 TEST(Grain, NeighboursShareGrainOverAboutAPixel) {
-  RgbImage image(kStatsSide, kStatsSide, 0.5f);
+  RgbImage image(testing::kStatsSide, testing::kStatsSide, 0.5f);
   apply_grain(image, 0.2, 1, 1);
   const auto correlation = [&](int dx, int dy) {
     double sum = 0.0, var = 0.0;
-    for (int y = 0; y + dy < kStatsSide; ++y) {
-      for (int x = 0; x + dx < kStatsSide; ++x) {
+    for (int y = 0; y + dy < testing::kStatsSide; ++y) {
+      for (int x = 0; x + dx < testing::kStatsSide; ++x) {
         const double d = image.at(x, y, 0) - 0.5;
         sum += d * (image.at(x + dx, y + dy, 0) - 0.5);
         var += d * d;

@@ -14,14 +14,11 @@
 namespace raintrace::film {
 namespace {
 
-using testing::departure_from;
-using testing::kStatsSide;
-
 /// Mean and RMS of (out − L) over channel c of a flat image of scene-linear value L.
 testing::Departure noise_stats(float linear, double strength, int c) {
-  RgbImage image(kStatsSide, kStatsSide, linear);
+  RgbImage image(testing::kStatsSide, testing::kStatsSide, linear);
   apply_sensor_noise(image, strength, 7, 3);
-  return departure_from(image, linear, c);
+  return testing::departure_from(image, linear, c);
 }
 
 TEST(SensorNoise, RmsIsShotNoiseOverAReadFloor) {
@@ -45,10 +42,11 @@ TEST(SensorNoise, IsZeroMeanWithTheContractedRmsInEveryChannel) {
   // grain_test.cpp: the mean within 8/512 of the RMS (clumping doubles the independent 4/512),
   // the RMS within 1 %.
   for (float linear : {0.18f, 0.02f, 2.0f}) {
-    const double expected = sensor_noise_rms(0.2, kStatsSide, linear);
+    const double expected = sensor_noise_rms(0.2, testing::kStatsSide, linear);
     for (int c = 0; c < 3; ++c) {
       const testing::Departure s = noise_stats(linear, 0.2, c);
-      EXPECT_NEAR(s.mean, 0.0, 8.0 * expected / kStatsSide) << "L " << linear << " channel " << c;
+      EXPECT_NEAR(s.mean, 0.0, 8.0 * expected / testing::kStatsSide)
+          << "L " << linear << " channel " << c;
       EXPECT_NEAR(s.rms, expected, 0.01 * expected) << "L " << linear << " channel " << c;
     }
   }
@@ -58,12 +56,12 @@ TEST(SensorNoise, IsZeroMeanWithTheContractedRmsInEveryChannel) {
 // draws (standard error ≈ 2/√N with the clumping, 0.004; allow 0.02). Neighbours within a
 // channel share it as pixel_noise.h says (8/18 across a side).
 TEST(SensorNoise, ChannelsAreIndependentAndNeighboursClump) {
-  RgbImage image(kStatsSide, kStatsSide, 0.5f);
+  RgbImage image(testing::kStatsSide, testing::kStatsSide, 0.5f);
   apply_sensor_noise(image, 0.3, 1, 1);
   const auto correlation = [&](int c1, int c2, int dx) {
     double sum = 0.0, var1 = 0.0, var2 = 0.0;
-    for (int y = 0; y < kStatsSide; ++y) {
-      for (int x = 0; x + dx < kStatsSide; ++x) {
+    for (int y = 0; y < testing::kStatsSide; ++y) {
+      for (int x = 0; x + dx < testing::kStatsSide; ++x) {
         const double a = image.at(x, y, c1) - 0.5, b = image.at(x + dx, y, c2) - 0.5;
         sum += a * b;
         var1 += a * a;

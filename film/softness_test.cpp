@@ -13,8 +13,6 @@
 namespace raintrace::film {
 namespace {
 
-using testing::channel_sum;
-
 TEST(Softness, SigmaIsGivenAt1920PixelsAndScalesWithTheWidth) {
   EXPECT_DOUBLE_EQ(softness_sigma_px(1.5, 1920), 1.5);
   EXPECT_DOUBLE_EQ(softness_sigma_px(1.5, 640), 0.5);
@@ -38,7 +36,7 @@ TEST(Softness, APointSpreadsIntoTheGaussianAndKeepsItsLight) {
   const double variance = tap_moment / tap_sum;
   EXPECT_NEAR(variance, 1.5 * 1.5, 0.005 * 1.5 * 1.5);
   for (int c = 0; c < 3; ++c) {
-    EXPECT_NEAR(channel_sum(image, c), 100.0 * (c + 1), 1e-3 * (c + 1));
+    EXPECT_NEAR(testing::channel_sum(image, c), 100.0 * (c + 1), 1e-3 * (c + 1));
     double mx = 0.0, my = 0.0, sum = 0.0;
     for (int y = 0; y < image.height; ++y) {
       for (int x = 900; x < 1020; ++x) {
@@ -61,7 +59,7 @@ TEST(Softness, EdgesMirrorTheLightBackIn) {
   RgbImage edge(1920, 8);
   for (int y = 0; y < 8; ++y) edge.at(0, y, 1) = 50.0f;
   apply_softness(edge, 4.0);
-  EXPECT_NEAR(channel_sum(edge, 1), 8 * 50.0, 1e-3);
+  EXPECT_NEAR(testing::channel_sum(edge, 1), 8 * 50.0, 1e-3);
   EXPECT_GT(edge.at(5, 3, 1), 0.0f);
 
   RgbImage one(1, 1, 0.7f);
