@@ -43,6 +43,22 @@ TEST(Templates, BuiltinsAreEmbeddedAndMatchTheSourceFiles) {
   EXPECT_NE(materials_template().find("#declare RT_DropMaterial"), std::string::npos);
 }
 
+TEST(Templates, NoSpotlightIsShadowless) {
+  // POV-Ray 3.7 ignores a shadowless spotlight's cone (docs/povray-notes.md, "Lights"): such a
+  // light would shine in every direction.
+  for (const std::string& name : builtin_environments()) {
+    const std::string text = environment_template(name);
+    for (std::size_t at = text.find("light_source"); at != std::string::npos;
+         at = text.find("light_source", at + 1)) {
+      const std::size_t end = text.find('}', at);
+      const std::string light = text.substr(at, end - at);
+      EXPECT_FALSE(light.find("spotlight") != std::string::npos &&
+                   light.find("shadowless") != std::string::npos)
+          << name << ": " << light;
+    }
+  }
+}
+
 TEST(Templates, HostileEnvironmentNamesAreRejected) {
   for (const char* name : {"night_street\"", "#system(\"id\")", "../field", "field\n#fopen",
                            "field ", "/etc/passwd", ""}) {
