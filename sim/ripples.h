@@ -1,10 +1,11 @@
 // Ring ripples from drop impacts on standing water, as a height field over the ground.
 //
-// A drop hitting water sends out a packet of capillary-gravity waves. Their group velocity has
-// a minimum, c_min = (4gσ/ρ)^(1/4) ≈ 0.231 m/s at λ_min = 2π·√(σ/(ρg)) ≈ 1.71 cm, where it
-// equals the phase velocity; energy piles up there, so the ring a viewer sees expands at
-// ≈ c_min with crests ≈ λ_min apart (Lamb, Hydrodynamics §267; Lighthill, Waves in Fluids
-// §3.7). The model draws that ring: h(r, t) = a(t)·exp(−ξ²/(2w²))·cos(k·ξ), ξ = r − r_f(t),
+// A drop hitting water sends out a packet of capillary-gravity waves. Their phase velocity has
+// a minimum, c_min = (4gσ/ρ)^(1/4) ≈ 0.231 m/s at λ_min = 2π·√(σ/(ρg)) ≈ 1.71 cm, where the
+// group velocity equals it (Lamb, Hydrodynamics §267; Lighthill, Waves in Fluids §3.7). The
+// model draws a ring expanding at c_min with crests λ_min apart (measured rings are longer,
+// ~31 mm, and spread near the group velocity's own minimum, 0.178 m/s: docs/ground.md, "Known
+// limit"): h(r, t) = a(t)·exp(−ξ²/(2w²))·cos(k·ξ), ξ = r − r_f(t),
 // r_f = r0 + c_min·t, k = 2π/λ_min, w = 0.6·λ_min (two crests and a trough). The amplitude
 // spreads with the ring, a ∝ √(r0/r_f) (energy conserved on a circle), starts at
 // a0 = kRippleAmplitudePerDiameter·D and fades to 0 by the ripple's lifetime with (1 − t/T)².
@@ -30,8 +31,9 @@ double ripple_speed();
 double ripple_wavelength();
 
 /// First crest height per metre of drop diameter (a 2 mm drop: 0.5 mm; its first ring tilts the
-/// water by ~10° at 1 cm and ~1° at 10 cm, enough to break a reflection). Chosen by eye: no
-/// measurement of ring amplitudes from raindrops was found to calibrate it.
+/// water by ~10° at 1 cm and ~1° at 10 cm, enough to break a reflection). Chosen by eye; the
+/// measured energy of raindrop rings, about 1 % of the drop's kinetic energy, agrees: a 2.8 mm
+/// drop's ring carries 0.45 % (docs/ground.md, "Known limit"; tested).
 inline constexpr double kRippleAmplitudePerDiameter = 0.25;
 
 /// The ripple of one impact `age_s` after it, or a ripple with lifetime 0 when it has faded
