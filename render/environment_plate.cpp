@@ -6,8 +6,6 @@
 
 #include <fmt/core.h>
 #include <chrono>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <thread>
 

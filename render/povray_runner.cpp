@@ -5,9 +5,7 @@
 
 #include <fmt/core.h>
 #include <chrono>
-#include <fstream>
 #include <memory>
-#include <sstream>
 #include <thread>
 #include <vector>
 

@@ -5,7 +5,6 @@
 #include <fmt/core.h>
 #include <unistd.h>
 #include <fstream>
-#include <sstream>
 
 #include "output/layout.h"
 #include "output/manifest.h"
