@@ -1,8 +1,8 @@
 // The wet ground rendered by the real POV-Ray (ctest label `povray`; skipped without povray):
 // ripples appear in the picture where their impacts were simulated and spread with time, the
 // rain's unresolved roughness does not alias into glints without antialiasing, a puddle shows
-// the ground beneath it, its shoreline is ragged, and splashes carry on past the simulated
-// volume of drops without an edge.
+// the ground beneath it and covers the paint on it, its shoreline is ragged, and splashes carry
+// on past the simulated volume of drops without an edge.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -80,6 +80,23 @@ constexpr const char* kWaterUnderWhiteSky = R"(
 #declare Dry = texture { pigment { rgb 0 } finish { ambient 0 diffuse 0 } }
 plane { y, 0
   texture { RT_WetGround(Dry) }
+  interior { ior 1.33 }
+}
+sky_sphere { pigment { rgb 1 } }
+)";
+
+/// kWaterUnderWhiteSky with a strip of glowing paint, a metre wide, laid on the road along the
+/// view (RT_WetGroundOver, over a black bed): dry, the paint glows; in a puddle its water
+/// covers it and mirrors the sky as the water beside it does.
+constexpr const char* kPaintUnderWhiteSky = R"(
+#declare Dry = texture { pigment { rgb 0 } finish { ambient 0 diffuse 0 } }
+plane { y, 0
+  texture { RT_WetGround(Dry) }
+  interior { ior 1.33 }
+}
+#declare Paint = texture { pigment { rgb 1 } finish { ambient 0.3 diffuse 0 } }
+box { <-0.5, 0, -4>, <0.5, 0.002, 60>
+  texture { RT_WetGroundOver(Paint, pigment { rgb 0 }) }
   interior { ior 1.33 }
 }
 sky_sphere { pigment { rgb 1 } }
@@ -295,6 +312,23 @@ TEST(PovRayGround, UnresolvedRoughnessDoesNotAliasIntoGlints) {
 // (POV-Ray does not take the Fresnel share a surface reflects from its diffuse light —
 // conserve_energy acts on transparency only — so the ground beside the puddles and the bed
 // through the water match, as the wet road's own finish does.)
+/// A folder with one frame of `look` (no drops) over `environment`.
+fs::path still_folder(const std::string& name, const ExportParams& look, const char* environment) {
+  std::vector<sim::Frame> frames(1);
+  frames[0].index = 1;
+  return wet_folder(name, look, frames, environment);
+}
+
+/// Frame 1 of `dir` rendered without antialiasing, as linear RGB (empty, with a failure naming
+/// POV-Ray's log, if it did not render).
+std::vector<float> render_still(const fs::path& dir) {
+  if (run_povray(dir, "scene.ini +SF1 +EF1 -A") != 0) {
+    ADD_FAILURE() << log_of(dir);
+    return {};
+  }
+  return read_rgb(dir / "images" / "frame_0001.exr");
+}
+
 TEST(PovRayGround, PuddleShowsTheGroundBeneathItsSurface) {
   SKIP_WITHOUT_POVRAY();
   const ExportParams look = calm_puddles(320, 0.5, 1.0);
@@ -347,6 +381,57 @@ TEST(PovRayGround, PuddleShowsTheGroundBeneathItsSurface) {
   fs::remove_all(with_bed);
 }
 
+// Road paint in a puddle lies under its water: it mirrors the street as the water beside it does
+// (painted on top, a road marking read as a plank lying in the puddle).
+TEST(PovRayGround, PaintInAPuddleLiesUnderItsWater) {
+  SKIP_WITHOUT_POVRAY();
+  const ExportParams look = calm_puddles(320, 0.5, 1.0);
+  const sim::PuddleField field(look.ground.puddles, look.ground.puddles.seed);
+  const fs::path dir = still_folder("paint", look, kPaintUnderWhiteSky);
+  const auto image = render_still(dir);
+  ASSERT_EQ(image.size(), static_cast<std::size_t>(3 * look.width * look.height));
+
+  // Per row (one view angle), water over the paint against water beside it, well inside the
+  // strip and well outside it; and the dry paint's glow.
+  const GroundPixels pixels(look.camera, look.width, look.height, 0.0);
+  double ratio_sum = 0.0, dry_paint = 0.0;
+  int rows = 0, n_dry_paint = 0;
+  for (int j = 0; j < look.height; ++j) {
+    double on_paint = 0.0, beside = 0.0;
+    int n_on_paint = 0, n_beside = 0;
+    for (int i = 0; i < look.width; ++i) {
+      const std::size_t p = static_cast<std::size_t>(j) * look.width + i;
+      if (!pixels.hits(p) || pixels.z(p) > 30.0) continue;
+      const double across = std::abs(pixels.x(p));
+      const double share = field.share(pixels.x(p), pixels.z(p));
+      const float green = image[3 * p + 1];
+      if (share <= 0.0 && across < 0.4) {
+        dry_paint += green;
+        ++n_dry_paint;
+      }
+      if (share < 1.0) continue;
+      if (across < 0.4) {
+        on_paint += green;
+        ++n_on_paint;
+      } else if (across > 0.6) {
+        beside += green;
+        ++n_beside;
+      }
+    }
+    if (n_on_paint < 3 || n_beside < 3) continue;
+    ratio_sum += (on_paint / n_on_paint) / (beside / n_beside);
+    ++rows;
+  }
+  ASSERT_GT(rows, 20) << "too few rows with water both on the paint and beside it";
+  ASSERT_GT(n_dry_paint, 200);
+  const double ratio = ratio_sum / rows;
+  std::printf("water on the paint / beside it: %.3f over %d rows; dry paint %.3f\n", ratio, rows,
+              dry_paint / n_dry_paint);
+  EXPECT_NEAR(ratio, 1.0, 0.05) << "the paint is not under the puddle's water";
+  EXPECT_NEAR(dry_paint / n_dry_paint, 0.3, 0.03) << "the dry paint does not show";
+  fs::remove_all(dir);
+}
+
 // A puddle's shoreline follows the road's relief within its band: water in the low spots outside
 // the smooth field's edge, dry islands inside it — and nothing of that beyond the band, where the
 // mask is 0 or 1. (With a smooth edge, the band's outer half would be dry and its inner half
@@ -355,11 +440,8 @@ TEST(PovRayGround, ShorelinesAreRaggedWithinTheirBandAndExactBeyondIt) {
   SKIP_WITHOUT_POVRAY();
   const ExportParams look = calm_puddles(640, 0.4, 1.5);
   const sim::PuddleField field(look.ground.puddles, look.ground.puddles.seed);
-  std::vector<sim::Frame> frames(1);
-  frames[0].index = 1;
-  const fs::path dir = wet_folder("shore", look, frames, kWaterUnderWhiteSky);
-  ASSERT_EQ(run_povray(dir, "scene.ini +SF1 +EF1 -A"), 0) << log_of(dir);
-  const auto image = read_rgb(dir / "images" / "frame_0001.exr");
+  const fs::path dir = still_folder("shore", look, kWaterUnderWhiteSky);
+  const auto image = render_still(dir);
   ASSERT_EQ(image.size(), static_cast<std::size_t>(3 * look.width * look.height));
 
   // Pixels within 12 m of the camera (a pixel spans under 3 cm of ground along the line of
