@@ -146,6 +146,23 @@ fs::path wet_folder(const std::string& name, const ExportParams& base,
   return dir;
 }
 
+/// A folder with one frame of `look` (no drops) over `environment`.
+fs::path still_folder(const std::string& name, const ExportParams& look, const char* environment) {
+  std::vector<sim::Frame> frames(1);
+  frames[0].index = 1;
+  return wet_folder(name, look, frames, environment);
+}
+
+/// Frame 1 of `dir` rendered without antialiasing, as linear RGB (empty, with a failure naming
+/// POV-Ray's log, if it did not render).
+std::vector<float> render_still(const fs::path& dir) {
+  if (run_povray(dir, "scene.ini +SF1 +EF1 -A") != 0) {
+    ADD_FAILURE() << log_of(dir);
+    return {};
+  }
+  return read_rgb(dir / "images" / "frame_0001.exr");
+}
+
 TEST(PovRayGround, RipplesAppearWhereTheirImpactsWereAndSpreadWithTime) {
   SKIP_WITHOUT_POVRAY();
   // The camera 1.6 m up looks at the ground 2.5 m ahead (a pixel spans ~2.5 mm there at 1280
@@ -312,30 +329,11 @@ TEST(PovRayGround, UnresolvedRoughnessDoesNotAliasIntoGlints) {
 // (POV-Ray does not take the Fresnel share a surface reflects from its diffuse light —
 // conserve_energy acts on transparency only — so the ground beside the puddles and the bed
 // through the water match, as the wet road's own finish does.)
-/// A folder with one frame of `look` (no drops) over `environment`.
-fs::path still_folder(const std::string& name, const ExportParams& look, const char* environment) {
-  std::vector<sim::Frame> frames(1);
-  frames[0].index = 1;
-  return wet_folder(name, look, frames, environment);
-}
-
-/// Frame 1 of `dir` rendered without antialiasing, as linear RGB (empty, with a failure naming
-/// POV-Ray's log, if it did not render).
-std::vector<float> render_still(const fs::path& dir) {
-  if (run_povray(dir, "scene.ini +SF1 +EF1 -A") != 0) {
-    ADD_FAILURE() << log_of(dir);
-    return {};
-  }
-  return read_rgb(dir / "images" / "frame_0001.exr");
-}
-
 TEST(PovRayGround, PuddleShowsTheGroundBeneathItsSurface) {
   SKIP_WITHOUT_POVRAY();
   const ExportParams look = calm_puddles(320, 0.5, 1.0);
   const sim::PuddleField field(look.ground.puddles, look.ground.puddles.seed);
-  std::vector<sim::Frame> frames(1);
-  frames[0].index = 1;
-  const fs::path with_bed = wet_folder("bed", look, frames, kPlainGroundUnderWater);
+  const fs::path with_bed = still_folder("bed", look, kPlainGroundUnderWater);
   ASSERT_EQ(run_povray(with_bed, "scene.ini +SF1 +EF1 -A"), 0) << log_of(with_bed);
   // The same ground with no bed declared: the near-black default shows through.
   ASSERT_EQ(run_povray(with_bed, "scene.ini +SF1 +EF1 -A Declare=NoBed=1 +Oimages/no_bed"), 0)
