@@ -288,7 +288,11 @@ void write_streak_mesh(Emitter& out, const std::vector<StreakValue>& streaks,
           uv_lines[static_cast<std::size_t>(used.slot[static_cast<std::size_t>(streaks[i].cell)])];
     }
   });
-  out.text("}\ntexture{RT_StreakTexture}\nno_shadow hollow\n}\n");
+  // Left out of reflections: a streak is a quad turned to the camera, its length and coverage
+  // what the camera sees of the drop, so a mirror, looking at it from below, would show a
+  // wrong streak; and every reflected ray off the wet road, the puddles and the glass crossed
+  // the whole mesh (4-10 % of a 1280x720 final frame of the default, BENCHMARKS.md).
+  out.text("}\ntexture{RT_StreakTexture}\nno_shadow no_reflection hollow\n}\n");
 }
 
 // How far a bolt's glow reaches, in radii of its channel.

@@ -56,7 +56,7 @@ TEST(FrameText, GoldenTinyFrame) {
       "<0,1,2>,<0,2,3>,\n"
       "}\n"
       "texture{RT_StreakTexture}\n"
-      "no_shadow hollow\n"
+      "no_shadow no_reflection hollow\n"
       "}\n"
       "#if(RT_Mask=0)\n"
       "union{\n"
