@@ -376,18 +376,22 @@ TEST(ExampleFigures, DefaultPavementPuddlesMirrorTheLitShops) {
 // only (0). Seen at 60–80° from their normal the panes reflect 7–40 % of the wet street, the
 // lamps and the facades opposite, over the lit interior: the interior only ever gains light.
 // Over the two shop windows in view (x 110–150 and 545–640, y 115–200 of 640×360) at least 900
-// pixels must be brighter by 0.005 (linear), and hardly any darker. Measured: 1837 brighter, 1
-// darker (a rain streak's antialiasing).
+// pixels must be brighter by 0.005 (linear), and hardly any darker. Measured: 1574 brighter, 1
+// darker (a rain streak's antialiasing); 1837 and 1 while the lamps' haze, which the glass
+// mirrors too, was twice today's.
 TEST(ExampleFigures, DefaultStreetShopWindowsMirrorTheStreet) {
   if (!have_povray()) GTEST_SKIP() << "povray is not installed";
   const auto [mirror, clear] =
       render_default_twice("default_shops", 640, "Declare=RT_Preview=0", "Declare=RT_ShopMirror=0");
   ASSERT_EQ(mirror.width, 640);
   ASSERT_EQ(mirror.rgb.size(), clear.rgb.size());
-  const int brighter = pixels_brighter(mirror, clear, 110, 150, 115, 200, 0.005f) +
-                       pixels_brighter(mirror, clear, 545, 640, 115, 200, 0.005f);
-  const int darker = pixels_brighter(clear, mirror, 110, 150, 115, 200, 0.005f) +
-                     pixels_brighter(clear, mirror, 545, 640, 115, 200, 0.005f);
+  // Pixels of the two windows brighter in `lighter` than in `base` by 0.005.
+  const auto over_windows = [](const Image& lighter, const Image& base) {
+    return pixels_brighter(lighter, base, 110, 150, 115, 200, 0.005f) +
+           pixels_brighter(lighter, base, 545, 640, 115, 200, 0.005f);
+  };
+  const int brighter = over_windows(mirror, clear);
+  const int darker = over_windows(clear, mirror);
   std::printf("shop window pixels the mirror brightens: %d, darkens: %d\n", brighter, darker);
   EXPECT_GE(brighter, 900) << "the open shops' windows mirror nothing";
   EXPECT_LT(darker, brighter / 10) << "the shop glass hides its interior instead of adding to it";
