@@ -376,7 +376,9 @@ void write_frame_text(const FrameValues& values, const TextSink& sink,
   out.number(values.flash_position.y);
   out.text(",");
   out.number(values.flash_position.z);
-  out.text(">;\n");
+  out.text(">;\n#declare RT_Time=");
+  out.number(values.time_s);
+  out.text(";\n");
   // A bolt passes behind buildings: its frame traces the full environment, not the plate.
   const bool bolts = std::any_of(values.bolts.begin(), values.bolts.end(),
                                  [](const BoltValue& b) { return !b.segments.empty(); });

@@ -19,6 +19,7 @@ StreakAtlasLayout one_cell() { return StreakAtlasLayout{1, 1, 16, 64}; }
 TEST(FrameText, GoldenTinyFrame) {
   FrameValues values;
   values.index = 7;
+  values.time_s = 0.625;
   values.flash = 0.5f;
   values.flash_position = {1.0f, 300.0f, 200.0f};
   values.drops.push_back({{0.5f, 1.25f, -2.0f}, 0.001f, 1.0f});
@@ -34,6 +35,7 @@ TEST(FrameText, GoldenTinyFrame) {
       "#version 3.7;\n"
       "#declare RT_Flash=0.5;\n"
       "#declare RT_FlashPosition=<1,300,200>;\n"
+      "#declare RT_Time=0.625;\n"
       "#declare RT_Bolts=1;\n"
       "#include \"scene.inc\"\n"
       "union{\n"
@@ -79,7 +81,7 @@ TEST(FrameText, EmptyFrameHasOnlyTheHeader) {
   values.index = 1;
   EXPECT_EQ(frame_text(values),
             "// raintrace frame 1\n#version 3.7;\n#declare RT_Flash=0;\n"
-            "#declare RT_FlashPosition=<0,0,0>;\n#include \"scene.inc\"\n");
+            "#declare RT_FlashPosition=<0,0,0>;\n#declare RT_Time=0;\n#include \"scene.inc\"\n");
 }
 
 TEST(FrameText, FrameWithABoltSaysSoBeforeTheSceneInclude) {
