@@ -383,11 +383,6 @@ void write_frame_text(const FrameValues& values, const TextSink& sink,
   const bool bolts = std::any_of(values.bolts.begin(), values.bolts.end(),
                                  [](const BoltValue& b) { return !b.segments.empty(); });
   if (bolts) out.text("#declare RT_Bolts=1;\n");
-  if (values.ground) {
-    out.text("#declare RT_RippleTime=");
-    out.number(values.time_s);
-    out.text(";\n");
-  }
   if (!values.ripples.empty()) {
     // The map's pixels' hash: the frame's text, and so its input hash, changes with them.
     const std::vector<std::uint16_t> pixels = ripple_pixels(values.ripples);

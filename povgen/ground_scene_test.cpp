@@ -58,7 +58,7 @@ TEST(GroundScene, FrameDeclaresItsTimeAndNamesItsRippleMapWithItsHash) {
   values.index = 12;
   values.ground = true;
   values.time_s = 0.5;
-  EXPECT_NE(frame_text(values).find("#declare RT_RippleTime=0.5;\n#include \"scene.inc\""),
+  EXPECT_NE(frame_text(values).find("#declare RT_Time=0.5;\n#include \"scene.inc\""),
             std::string::npos);
   values.ripples.width = 1;
   values.ripples.height = 1;
