@@ -32,8 +32,9 @@ double ripple_wavelength();
 
 /// First crest height per metre of drop diameter (a 2 mm drop: 0.5 mm; its first ring tilts the
 /// water by ~10° at 1 cm and ~1° at 10 cm, enough to break a reflection). Chosen by eye; the
-/// measured energy of raindrop rings, about 1 % of the drop's kinetic energy, agrees: a 2.8 mm
-/// drop's ring carries 0.45 % (docs/ground.md, "Known limit"; tested).
+/// measured energy of raindrop rings is about 1 % of the drop's kinetic energy, and a 2.8 mm
+/// drop's ring carries 0.45 %, the same order (tested). 0.37 would match it, at 42 % more
+/// POV-Ray time on the default example (docs/ground.md, "Known limit").
 inline constexpr double kRippleAmplitudePerDiameter = 0.25;
 
 /// The ripple of one impact `age_s` after it, or a ripple with lifetime 0 when it has faded
