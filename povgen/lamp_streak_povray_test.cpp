@@ -1,0 +1,106 @@
+// The wet road's glossy streak under a streetlight (night_street's RT_LampStreak), with the real
+// POV-Ray (ctest label `povray`; skipped without povray). A streetlight's lens is flat and faces
+// down, so a point of the road sees its area foreshortened by cos θ, θ the angle from straight
+// down at which that point sees the lens; the streak must carry the lens's light weighted so.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "povgen/output_folder.h"
+#include "povgen/povray_test_support.h"
+#include "povgen/templates.h"
+
+namespace raintrace::povgen {
+namespace {
+
+namespace fs = std::filesystem;
+
+using testing::log_of;
+using testing::read_rgb;
+using testing::run_povray;
+
+constexpr int kSize = 200;
+
+// A camera 1.45 m above a perfect mirror (the road, reflection 1, no Fresnel), looking at the
+// point where it sees the mirror image of a lens 5.88 m up and 22 m ahead: 4.352 m ahead
+// (1.45 · 22 / 7.33), the middle of the picture. `streak` is the RT_LampStreak call, or empty.
+std::string mirror_scene(const std::string& streak) {
+  return "#version 3.7;\n"
+         "global_settings { assumed_gamma 1 }\n"
+         "#declare RT_CameraPosition = <0, 1.45, 0>;\n"
+         "#declare RT_LightsOnly = 1;\n"  // the macros without the street
+         "#include \"night_street.inc\"\n"
+         "#declare RT_Mirror = 0.5;\n"
+         "camera { perspective location RT_CameraPosition look_at <0, 0, 4.352> angle 30 }\n"
+         "plane { y, 0 pigment { rgb 0 } finish { ambient 0 diffuse 0 reflection 1 } }\n" +
+         streak + "\n";
+}
+
+// Mean red of the 3×3 pixels around (x, y) of a linear RGB image kSize wide.
+double red_around(const std::vector<float>& px, int x, int y) {
+  double sum = 0.0;
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) sum += px[3 * ((y + dy) * kSize + x + dx)];
+  }
+  return sum / 9.0;
+}
+
+// Where the camera sees the mirror image of the lens, the road reflects the lens from
+// d_p = 4.352 m: the lens lies 17.65 m away horizontally and 5.88 m up, θ = 71.6° from straight
+// down, cos θ = 0.315. The streak of a lens facing down (FacesDown 1) must be that share of the
+// streak of one facing the camera (FacesDown 0), the background (no streak) taken off; and it
+// must weaken toward the camera (lower in the picture), where the road sees the lens more
+// obliquely, while the camera-facing streak's Gaussian falls off symmetrically.
+TEST(PovRayLampStreak, AStreetlightsStreakIsItsLensForeshortenedAsTheRoadSeesIt) {
+  SKIP_WITHOUT_POVRAY();
+  const fs::path dir = testing::scratch_folder("povray_test_lamp_streak");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  write_file_atomic(dir / "night_street.inc", environment_template("night_street"));
+  const std::string lamp = "RT_LampStreak(<0, 5.88, 22>, 40, <1, 1, 1>, ";
+  write_file_atomic(dir / "down.pov", mirror_scene(lamp + "1)"));
+  write_file_atomic(dir / "facing.pov", mirror_scene(lamp + "0)"));
+  write_file_atomic(dir / "none.pov", mirror_scene(""));
+  const std::string size = " +W" + std::to_string(kSize) + " +H" + std::to_string(kSize);
+  for (const char* name : {"down", "facing", "none"}) {
+    ASSERT_EQ(run_povray(dir, std::string(name) + ".pov" + size + " -A +FE +O" + name + ".exr"), 0)
+        << name << ":\n"
+        << log_of(dir);
+  }
+  const auto down = read_rgb(dir / "down.exr");
+  const auto facing = read_rgb(dir / "facing.exr");
+  const auto none = read_rgb(dir / "none.exr");
+  ASSERT_EQ(down.size(), 3u * kSize * kSize);
+  ASSERT_EQ(facing.size(), down.size());
+  ASSERT_EQ(none.size(), down.size());
+
+  // The streak's brightest row in the middle column: the Gaussian's peak, the lens's image.
+  const int x = kSize / 2;
+  int peak = 1;
+  for (int y = 1; y < kSize - 1; ++y) {
+    if (red_around(facing, x, y) > red_around(facing, x, peak)) peak = y;
+  }
+  const auto streak = [&](const std::vector<float>& px, int y) {
+    return red_around(px, x, y) - red_around(none, x, y);
+  };
+  ASSERT_GT(streak(facing, peak), 1.0) << "the mirror shows no streak";
+  ASSERT_NEAR(peak, kSize / 2, 5) << "the streak's peak is not at the lens's mirror image";
+  const double at_peak = streak(down, peak) / streak(facing, peak);
+  std::printf("streak of a lens facing down over one facing the camera: %.3f at row %d\n", at_peak,
+              peak);
+  EXPECT_NEAR(at_peak, 0.315, 0.02) << "not the lens foreshortened by cos θ";
+
+  // 20 rows either side of the peak: the ratio falls toward the camera (below the peak).
+  const double above = streak(down, peak - 20) / streak(facing, peak - 20);
+  const double below = streak(down, peak + 20) / streak(facing, peak + 20);
+  std::printf("20 rows above: %.3f, below: %.3f\n", above, below);
+  EXPECT_GT(above, at_peak);
+  EXPECT_LT(below, at_peak);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace raintrace::povgen
