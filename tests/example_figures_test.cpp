@@ -313,10 +313,12 @@ TEST(ExampleFigures, DefaultStreetMirrorsTheLampsHazeInTheWetRoad) {
 // small curved mirrors: where the smooth car shows one broad highlight or none, the beaded one
 // sends the lamps' glints to the camera from many points — pixels of the two nearest cars at
 // least 0.05 brighter (linear; their body is ~0.02-0.05) with the beads than without. Measured:
-// 27 of 9100 on the paint since the beads stand in patches with smooth sheets of water between
-// (22 when they covered all the paint; 0 without beads, by construction; 28 while the second car
-// was grey rather than silver); 49 while the glass carried beads too, before it became clear
-// enough to show the cabin (a beaded pane read as salt).
+// 13 of 9100 on the paint; 27 while the sheets standing for the wet road's glossy streaks, which
+// the beads mirror too, carried each streetlight's lens unforeshortened (3–6 times too bright);
+// before that 22 when the beads covered all the paint (they stand in patches with smooth sheets
+// of water between), 28 while the second car was grey rather than silver, 49 while the glass
+// carried beads too, before it became clear enough to show the cabin (a beaded pane read as
+// salt). 0 without beads, by construction.
 TEST(ExampleFigures, DefaultStreetCarsGlintWithRainBeads) {
   if (!have_povray()) GTEST_SKIP() << "povray is not installed";
   const auto [wet, dry] =
@@ -327,7 +329,7 @@ TEST(ExampleFigures, DefaultStreetCarsGlintWithRainBeads) {
   const int pixels = (500 - 360) * (225 - 160);
   const int glints = pixels_brighter(wet, dry, 360, 500, 160, 225, 0.05f);
   std::printf("glints on the nearest cars: %d of %d pixels\n", glints, pixels);
-  EXPECT_GE(glints, 14) << "the wet cars show no glints of their rain beads";
+  EXPECT_GE(glints, 8) << "the wet cars show no glints of their rain beads";
   EXPECT_LT(glints, pixels / 10) << "the beads glitter everywhere, not in the highlights";
 }
 
