@@ -213,6 +213,11 @@ std::string scene_inc_text(const ExportParams& look) {
     // it twice.
     text += "#declare RT_LampHaze=0;\n";
   }
+  if (look.fog.mode == FogMode::ground && look.fog.density_per_m > 0.0) {
+    // The environment's painted lamp haze is this mist where it stands around the lamps.
+    text += "#declare RT_GroundFogDensity=" + format_number(look.fog.density_per_m) + ";\n";
+    text += "#declare RT_GroundFogDepth=" + format_number(look.fog.depth_m) + ";\n";
+  }
   text += ground_scene_text(look);
   if (environment_plate_applies(look)) {
     text += environment_with_plate_text(look, aspect);

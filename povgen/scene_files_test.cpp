@@ -194,6 +194,12 @@ TEST(SceneFiles, FogModes) {
   EXPECT_TRUE(contains(scene_inc_text(look), "+RT_Flash*RT_LightningLight*RT_KeyLight/4*"));
   EXPECT_FALSE(contains(scene_inc_text(look), "RT_LampHaze"));
   EXPECT_TRUE(contains(scene_inc_text(look), "fog_alt 4 up y}"));
+  // The environment's painted lamp haze is this fog where the lamps stand: it reads the fog's
+  // density and depth, declared before it.
+  const std::string ground = scene_inc_text(look);
+  const auto environment = ground.find("#include \"environment.inc\"");
+  EXPECT_LT(ground.find("#declare RT_GroundFogDensity=0.05;"), environment);
+  EXPECT_LT(ground.find("#declare RT_GroundFogDepth=4;"), environment);
   look.fog.mode = FogMode::media;
   const std::string media = scene_inc_text(look);
   // Hollow container of radius depth around the camera; scattering 0.7·0.05, absorption 0.3·0.05.
@@ -204,6 +210,7 @@ TEST(SceneFiles, FogModes) {
   // Media mist scatters the lamps' light itself: the environment's painted lamp haze is off,
   // declared before the environment reads it.
   EXPECT_LT(media.find("#declare RT_LampHaze=0;"), media.find("#include \"environment.inc\""));
+  EXPECT_FALSE(contains(media, "RT_GroundFogDensity"));
   look.fog.density_per_m = 0.0;
   EXPECT_FALSE(contains(scene_inc_text(look), "absorption rgb"));
 }
