@@ -3,9 +3,11 @@
 // light scattered by the air around it, so it is as strong as that air is dense: with ground fog
 // (scene.inc declares RT_GroundFogDensity σ0 and RT_GroundFogDepth d) the fog where the lens
 // stands, POV-Ray's profile σ0 / (1 + (h/d)²) at the lamps' height h = 6 m; without, the
-// rain-soaked city air's 0.01 /m.
+// rain-soaked city air's 0.01 /m. Part of that light is the mist droplets' diffraction peak, a
+// halo whose angular size is set by the droplets, not by the lamp's distance.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -92,6 +94,104 @@ TEST(PovRayLampGlow, TheGlowIsAsStrongAsTheMistAroundTheLamp) {
               shallow_ratio);
   EXPECT_NEAR(deep_ratio, 1.3761, 0.02);
   EXPECT_NEAR(shallow_ratio, 0.0882, 0.005);
+  fs::remove_all(dir);
+}
+
+// A camera 1.45 m up, `distance` m before a lens 5.88 m up, looking at it; only the diffraction
+// peak of the lamp's glow (share `share`), the mist's drift held even.
+std::string halo_scene(double distance, double share) {
+  const std::string d = std::to_string(distance);
+  return "#version 3.7;\n"
+         "global_settings { assumed_gamma 1 }\n"
+         "#declare RT_CameraPosition = <0, 1.45, -" +
+         d +
+         ">;\n"
+         "#declare RT_LightsOnly = 1;\n"
+         "#declare RT_AureoleShare = 0;\n"
+         "#declare RT_DiffractionShare = " +
+         std::to_string(share) +
+         ";\n"
+         "#include \"night_street.inc\"\n"
+         "#undef RT_MistDrift\n"
+         "#declare RT_MistDrift = function { 0.5 }\n"  // 0.4 + 1.2 · 0.5 = 1
+         "camera { perspective location RT_CameraPosition look_at <0, 5.88, 0> right x up y "
+         "angle 10 }\n"
+         "RT_LampGlow(<0, 5.88, 0>, <1, 1, 1>)\n";
+}
+
+// Airy's pattern holds half its light within k·a·ψ = v: 1 − J0(v)² − J1(v)² = 1/2.
+double airy_half_energy() {
+  double lo = 1.0, hi = 2.5;
+  for (int i = 0; i < 60; ++i) {
+    const double v = 0.5 * (lo + hi);
+    const double inside =
+        1.0 - std::pow(std::cyl_bessel_j(0.0, v), 2) - std::pow(std::cyl_bessel_j(1.0, v), 2);
+    (inside < 0.5 ? lo : hi) = v;
+  }
+  return lo;
+}
+
+// The diffraction halo of mist droplets of radius 5 µm in green light, single-scattered along
+// the line of sight: radiance σ_d · 2L · cos θ_n · F(ρ/D) / ρ at a ray passing ρ from the lens,
+// D from the camera, F(γ) = ∫γ..π p(ψ) dψ for the Henyey-Greenstein lobe with Airy's half-energy
+// angle (its own is √3·(1 − g)/√g). Pixels beside the lens, where the ray meets the glow's sheet
+// (25 cm behind the lens), must show it within 5 % at the same angles from lamps 20 and 30 m
+// away: the halo's size is the droplets', whatever the distance.
+TEST(PovRayLampGlow, MistDiffractsAHaloAsWideAsItsDropletsMakeIt) {
+  SKIP_WITHOUT_POVRAY();
+  const fs::path dir = testing::scratch_folder("povray_test_lamp_halo");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  write_file_atomic(dir / "night_street.inc", environment_template("night_street"));
+  const double k_a = 2.0 * M_PI * 5e-6 / 0.55e-6;
+  const double width = airy_half_energy() / (std::sqrt(3.0) * k_a);  // (1 − g)/√g
+  const double root_g = 0.5 * (-width + std::sqrt(width * width + 4.0));
+  const double g = root_g * root_g;
+  const auto lobe = [&](double gamma) {  // F(γ), small angles
+    return (1 + g) / (4 * M_PI * (1 - g) * root_g) *
+           (1 - root_g * gamma / std::sqrt((1 - g) * (1 - g) + g * gamma * gamma));
+  };
+  std::printf("mist droplets of 5 µm: g = %.4f, half the halo within %.2f°\n", g,
+              std::sqrt(3.0) * width * 180 / M_PI);
+  constexpr int kHalo = 200;
+  const std::string size = " +W" + std::to_string(kHalo) + " +H" + std::to_string(kHalo);
+  const double lens_height = 5.88 - 1.45;
+  for (const double distance : {20.0, 30.0}) {
+    const auto render = [&](const std::string& name, double share) {
+      write_file_atomic(dir / (name + ".pov"), halo_scene(distance, share));
+      EXPECT_EQ(run_povray(dir, name + ".pov" + size + " -A +FE +O" + name + ".exr"), 0)
+          << name << ":\n"
+          << log_of(dir);
+      return read_rgb(dir / (name + ".exr"));
+    };
+    const auto with = render("halo", 0.5);
+    const auto without = render("no_halo", 0.0);
+    ASSERT_EQ(with.size(), 3u * kHalo * kHalo);
+    ASSERT_EQ(without.size(), with.size());
+    // The camera's basis: POV-Ray's look_at, right = y × direction, up = direction × right.
+    const double range = std::hypot(distance, lens_height);
+    const double dir_y = lens_height / range, dir_z = distance / range;
+    const double up_y = dir_z, up_z = -dir_y;
+    const double half = std::tan(5.0 * M_PI / 180.0);
+    // Haze 0.01 (no fog declared), lamp power 22, share 0.5: σ_d · 2L = 0.22; cos θ_n.
+    const double strength = 0.01 * 2 * 22 * 0.5 * lens_height / range;
+    const int row = kHalo / 2 - 3;  // just above the lens: the cone below it is not drawn there
+    for (const int column : {kHalo / 2 + 10, kHalo / 2 + 20, kHalo / 2 + 40}) {
+      const double u = ((column + 0.5) / kHalo - 0.5) * 2 * half;
+      const double v = (0.5 - (row + 0.5) / kHalo) * 2 * half;
+      // The ray from the camera (at the origin here) to the sheet z = distance + 0.25.
+      const double ray_x = u, ray_y = dir_y + v * up_y, ray_z = dir_z + v * up_z;
+      const double t = (distance + 0.25) / ray_z;
+      const double x = t * ray_x, y = t * ray_y - lens_height;
+      const double rho = std::sqrt(x * x + y * y + 0.0025);
+      const double expected = strength * lobe(rho / range) / rho;
+      const std::size_t i = 3 * (static_cast<std::size_t>(row) * kHalo + column);
+      const double measured = with[i] - without[i];
+      std::printf("lamp %.0f m away, %.2f° beside it: halo %.4f, expected %.4f\n", distance,
+                  std::atan(rho / range) * 180 / M_PI, measured, expected);
+      EXPECT_NEAR(measured / expected, 1.0, 0.05) << "at " << distance << " m, column " << column;
+    }
+  }
   fs::remove_all(dir);
 }
 
