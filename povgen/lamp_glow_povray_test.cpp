@@ -27,7 +27,7 @@ using testing::log_of;
 using testing::read_rgb;
 using testing::run_povray;
 
-constexpr int kSize = 64;
+constexpr int kGlowSize = 64;
 
 // An empty scratch folder holding night_street's template, for scenes that include it.
 fs::path folder_with_street(const std::string& name) {
@@ -56,9 +56,9 @@ double glow_below_lens(const std::vector<float>& with, const std::vector<float>&
   // 20° over 64 pixels at 20 m: 0.110 m a pixel; the lens is at the middle row.
   double sum = 0.0;
   int n = 0;
-  for (int y = kSize / 2 + 5; y <= kSize / 2 + 11; ++y) {
-    for (int x = kSize / 2 - 2; x <= kSize / 2 + 2; ++x) {
-      const std::size_t i = 3 * (static_cast<std::size_t>(y) * kSize + x);
+  for (int y = kGlowSize / 2 + 5; y <= kGlowSize / 2 + 11; ++y) {
+    for (int x = kGlowSize / 2 - 2; x <= kGlowSize / 2 + 2; ++x) {
+      const std::size_t i = 3 * (static_cast<std::size_t>(y) * kGlowSize + x);
       sum += with[i] - without[i];
       ++n;
     }
@@ -74,7 +74,7 @@ TEST(PovRayLampGlow, TheGlowIsAsStrongAsTheMistAroundTheLamp) {
   const std::string shallow =
       "#declare RT_GroundFogDensity = 0.015;\n#declare RT_GroundFogDepth = 1.5;\n";
   const std::string none;
-  const std::string size = " +W" + std::to_string(kSize) + " +H" + std::to_string(kSize);
+  const std::string size = " +W" + std::to_string(kGlowSize) + " +H" + std::to_string(kGlowSize);
   const auto render = [&](const std::string& name, const std::string& fog, bool glow) {
     write_file_atomic(dir / (name + ".pov"), glow_scene(fog, glow));
     EXPECT_EQ(run_povray(dir, name + ".pov" + size + " -A +FE +O" + name + ".exr"), 0)
@@ -86,7 +86,7 @@ TEST(PovRayLampGlow, TheGlowIsAsStrongAsTheMistAroundTheLamp) {
   const auto city_air = render("city_air", none, true);
   const auto deep_fog = render("deep_fog", deep, true);
   const auto shallow_fog = render("shallow_fog", shallow, true);
-  ASSERT_EQ(background.size(), 3u * kSize * kSize);
+  ASSERT_EQ(background.size(), 3u * kGlowSize * kGlowSize);
   ASSERT_EQ(city_air.size(), background.size());
   ASSERT_EQ(deep_fog.size(), background.size());
   ASSERT_EQ(shallow_fog.size(), background.size());
