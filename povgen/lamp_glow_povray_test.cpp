@@ -29,15 +29,6 @@ using testing::run_povray;
 
 constexpr int kGlowSize = 64;
 
-// An empty scratch folder holding night_street's template, for scenes that include it.
-fs::path folder_with_street(const std::string& name) {
-  const fs::path dir = testing::scratch_folder(name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  write_file_atomic(dir / "night_street.inc", environment_template("night_street"));
-  return dir;
-}
-
 // A camera 20 m from a lens 5.88 m up, level with it, the street's lamps only (RT_LightsOnly),
 // `fog` declared before the template. With `glow`, the lamp's glow sheet.
 std::string glow_scene(const std::string& fog, bool glow) {
@@ -68,7 +59,7 @@ double glow_below_lens(const std::vector<float>& with, const std::vector<float>&
 
 TEST(PovRayLampGlow, TheGlowIsAsStrongAsTheMistAroundTheLamp) {
   SKIP_WITHOUT_POVRAY();
-  const fs::path dir = folder_with_street("povray_test_lamp_glow");
+  const fs::path dir = testing::folder_with_street("povray_test_lamp_glow");
   const std::string deep =
       "#declare RT_GroundFogDensity = 0.015;\n#declare RT_GroundFogDepth = 20;\n";
   const std::string shallow =
@@ -145,7 +136,7 @@ double airy_half_energy() {
 // away: the halo's size is the droplets', whatever the distance.
 TEST(PovRayLampGlow, MistDiffractsAHaloAsWideAsItsDropletsMakeIt) {
   SKIP_WITHOUT_POVRAY();
-  const fs::path dir = folder_with_street("povray_test_lamp_halo");
+  const fs::path dir = testing::folder_with_street("povray_test_lamp_halo");
   const double k_a = 2.0 * M_PI * 5e-6 / 0.55e-6;
   const double width = airy_half_energy() / (std::sqrt(3.0) * k_a);  // (1 − g)/√g
   const double root_g = 0.5 * (-width + std::sqrt(width * width + 4.0));

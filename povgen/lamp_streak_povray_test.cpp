@@ -56,10 +56,7 @@ double red_around(const std::vector<float>& px, int x, int y) {
 // obliquely, while the camera-facing streak's Gaussian falls off symmetrically.
 TEST(PovRayLampStreak, AStreetlightsStreakIsItsLensForeshortenedAsTheRoadSeesIt) {
   SKIP_WITHOUT_POVRAY();
-  const fs::path dir = testing::scratch_folder("povray_test_lamp_streak");
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  write_file_atomic(dir / "night_street.inc", environment_template("night_street"));
+  const fs::path dir = testing::folder_with_street("povray_test_lamp_streak");
   const std::string lamp = "RT_LampStreak(<0, 5.88, 22>, 40, <1, 1, 1>, ";
   write_file_atomic(dir / "down.pov", mirror_scene(lamp + "1)"));
   write_file_atomic(dir / "facing.pov", mirror_scene(lamp + "0)"));
@@ -113,10 +110,7 @@ TEST(PovRayLampStreak, AStreetlightsStreakIsItsLensForeshortenedAsTheRoadSeesIt)
 // neither for the 4 % pedestal its Gaussian is cut at nor for standing 30 cm behind the lens).
 TEST(PovRayLampStreak, AMirrorShowsALampsLightOnce) {
   SKIP_WITHOUT_POVRAY();
-  const fs::path dir = testing::scratch_folder("povray_test_lamp_once");
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  write_file_atomic(dir / "night_street.inc", environment_template("night_street"));
+  const fs::path dir = testing::folder_with_street("povray_test_lamp_once");
   // A lens facing down, 7 cm above the point its light is counted from, as the street's are;
   // thin, so that all its light leaves through its face, and three times as wide and deep as
   // theirs, so that its foreshortened image spans a few rows and its light is sampled well.

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "povgen/output_folder.h"
+#include "povgen/templates.h"
 #include "tests/support/command.h"
 #include "tests/support/pixels.h"
 
@@ -34,6 +35,16 @@ inline int run_povray(const std::filesystem::path& dir, const std::string& args)
       "cd '" + dir.string() + "' && povray " + args + " -D -V >povray.log 2>&1";
   const int status = std::system(command.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/// An empty scratch folder (scratch_folder(name)) holding night_street's template, for scenes
+/// that include it.
+inline std::filesystem::path folder_with_street(const std::string& name) {
+  const std::filesystem::path dir = scratch_folder(name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  write_file_atomic(dir / "night_street.inc", environment_template("night_street"));
+  return dir;
 }
 
 inline std::string log_of(const std::filesystem::path& dir) {
