@@ -7,7 +7,6 @@
 // halo whose angular size is set by the droplets, not by the lamp's distance.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -16,16 +15,11 @@
 
 #include "povgen/output_folder.h"
 #include "povgen/povray_test_support.h"
-#include "povgen/templates.h"
 
 namespace raintrace::povgen {
 namespace {
 
 namespace fs = std::filesystem;
-
-using testing::log_of;
-using testing::read_rgb;
-using testing::run_povray;
 
 constexpr int kGlowSize = 64;
 
@@ -65,13 +59,10 @@ TEST(PovRayLampGlow, TheGlowIsAsStrongAsTheMistAroundTheLamp) {
   const std::string shallow =
       "#declare RT_GroundFogDensity = 0.015;\n#declare RT_GroundFogDepth = 1.5;\n";
   const std::string none;
-  const std::string size = " +W" + std::to_string(kGlowSize) + " +H" + std::to_string(kGlowSize);
+  const std::string options =
+      "+W" + std::to_string(kGlowSize) + " +H" + std::to_string(kGlowSize) + " -A";
   const auto render = [&](const std::string& name, const std::string& fog, bool glow) {
-    write_file_atomic(dir / (name + ".pov"), glow_scene(fog, glow));
-    EXPECT_EQ(run_povray(dir, name + ".pov" + size + " -A +FE +O" + name + ".exr"), 0)
-        << name << ":\n"
-        << log_of(dir);
-    return read_rgb(dir / (name + ".exr"));
+    return testing::trace_linear(dir, name, glow_scene(fog, glow), options);
   };
   const auto background = render("background", none, false);
   const auto city_air = render("city_air", none, true);
@@ -148,18 +139,11 @@ TEST(PovRayLampGlow, MistDiffractsAHaloAsWideAsItsDropletsMakeIt) {
   std::printf("mist droplets of 5 µm: g = %.4f, half the halo within %.2f°\n", g,
               std::sqrt(3.0) * width * 180 / M_PI);
   constexpr int kHalo = 200;
-  const std::string size = " +W" + std::to_string(kHalo) + " +H" + std::to_string(kHalo);
+  const std::string options = "+W" + std::to_string(kHalo) + " +H" + std::to_string(kHalo) + " -A";
   const double lens_height = 5.88 - 1.45;
   for (const double distance : {20.0, 30.0}) {
-    const auto render = [&](const std::string& name, double share) {
-      write_file_atomic(dir / (name + ".pov"), halo_scene(distance, share));
-      EXPECT_EQ(run_povray(dir, name + ".pov" + size + " -A +FE +O" + name + ".exr"), 0)
-          << name << ":\n"
-          << log_of(dir);
-      return read_rgb(dir / (name + ".exr"));
-    };
-    const auto with = render("halo", 0.5);
-    const auto without = render("no_halo", 0.0);
+    const auto with = testing::trace_linear(dir, "halo", halo_scene(distance, 0.5), options);
+    const auto without = testing::trace_linear(dir, "no_halo", halo_scene(distance, 0.0), options);
     ASSERT_EQ(with.size(), 3u * kHalo * kHalo);
     ASSERT_EQ(without.size(), with.size());
     // The camera's basis: POV-Ray's look_at, right = y × direction, up = direction × right.

@@ -116,26 +116,20 @@ TEST(PovRayLampStreak, AMirrorShowsALampsLightOnce) {
   // theirs, so that its foreshortened image spans a few rows and its light is sampled well.
   const std::string lens =
       "box { <-0.84, -0.0001, -0.36>, <0.84, 0, 0.36> translate <0, 5.95, 22> }";
-  write_file_atomic(dir / "copy.pov", mirror_scene("RT_MirroredLens(" + lens + ", <1, 1, 1>, 40)"));
-  write_file_atomic(dir / "streak.pov",
-                    mirror_scene("RT_LampStreak(<0, 5.88, 22>, 40 * 1.68 * 0.72, <1, 1, 1>, 1)"));
-  write_file_atomic(dir / "lens.pov",
-                    mirror_scene("object { " + lens +
-                                 " texture { pigment { rgb 1 } finish { ambient 0 diffuse 0 "
-                                 "emission 40 } } no_image }"));
-  write_file_atomic(dir / "none.pov", mirror_scene(""));
-  const std::string size = " +W" + std::to_string(kSize) + " +H" + std::to_string(kSize);
-  for (const char* name : {"copy", "streak", "lens", "none"}) {
-    ASSERT_EQ(run_povray(dir, std::string(name) + ".pov" + size + " +A0.01 +AM2 +R3 +FE +O" + name +
-                                  ".exr"),
-              0)
-        << name << ":\n"
-        << log_of(dir);
-  }
-  const auto copy = read_rgb(dir / "copy.exr");
-  const auto streak = read_rgb(dir / "streak.exr");
-  const auto alone = read_rgb(dir / "lens.exr");
-  const auto none = read_rgb(dir / "none.exr");
+  const std::string options =
+      "+W" + std::to_string(kSize) + " +H" + std::to_string(kSize) + " +A0.01 +AM2 +R3";
+  const auto copy = testing::trace_linear(
+      dir, "copy", mirror_scene("RT_MirroredLens(" + lens + ", <1, 1, 1>, 40)"), options);
+  const auto streak = testing::trace_linear(
+      dir, "streak", mirror_scene("RT_LampStreak(<0, 5.88, 22>, 40 * 1.68 * 0.72, <1, 1, 1>, 1)"),
+      options);
+  const auto alone = testing::trace_linear(
+      dir, "lens",
+      mirror_scene("object { " + lens +
+                   " texture { pigment { rgb 1 } finish { ambient 0 diffuse 0 emission 40 } } "
+                   "no_image }"),
+      options);
+  const auto none = testing::trace_linear(dir, "none", mirror_scene(""), options);
   ASSERT_EQ(copy.size(), 3u * kSize * kSize);
   ASSERT_EQ(streak.size(), copy.size());
   ASSERT_EQ(alone.size(), copy.size());

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "povgen/output_folder.h"
 #include "povgen/templates.h"
@@ -52,5 +53,17 @@ inline std::string log_of(const std::filesystem::path& dir) {
 }
 
 using raintrace::test_support::read_rgb;
+
+/// Writes `scene` to dir/NAME.pov, traces it to dir/NAME.exr with `options` (size, antialiasing)
+/// and reads the linear RGB back; a failed trace is a test failure (with POV-Ray's log) and gives
+/// an empty image.
+inline std::vector<float> trace_linear(const std::filesystem::path& dir, const std::string& name,
+                                       const std::string& scene, const std::string& options) {
+  write_file_atomic(dir / (name + ".pov"), scene);
+  EXPECT_EQ(run_povray(dir, name + ".pov " + options + " +FE +O" + name + ".exr"), 0)
+      << name << ":\n"
+      << log_of(dir);
+  return read_rgb(dir / (name + ".exr"));
+}
 
 }  // namespace raintrace::povgen::testing
