@@ -21,7 +21,7 @@ inline std::vector<glm::dvec3> environment_lamps(std::string_view environment_na
     int side;
   };
   constexpr std::array<StreetLight, 7> kNightStreetLights{
-      {{4, 1}, {16, -1}, {28, 1}, {40, -1}, {52, 1}, {88, -1}, {112, 1}}};
+      {{5, 1}, {16, -1}, {28, 1}, {40, -1}, {52, 1}, {88, -1}, {112, 1}}};
   constexpr double kLensX = 4.0 - 1.3;
   constexpr double kLensY = 6.0 - 0.12;
   std::vector<glm::dvec3> lenses;
