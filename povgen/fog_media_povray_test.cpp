@@ -18,9 +18,6 @@ namespace raintrace::povgen {
 namespace {
 
 namespace fs = std::filesystem;
-using testing::log_of;
-using testing::read_rgb;
-using testing::run_povray;
 
 // A street lamp as night_street has it (a downward spotlight with a soft edge from 60° to 78°
 // from straight down, light fading with the square of the distance) a little to the right of
@@ -44,10 +41,9 @@ std::vector<float> render_fog(const fs::path& dir, const std::string& samples) {
     if (at != std::string::npos) text.replace(at, written.size(), samples);
   }
   write_file_atomic(dir / "fog.inc", text);
-  write_file_atomic(dir / "fog.pov", "#declare RT_Flash=0;\n#include \"fog.inc\"\n");
-  const std::string image = samples.empty() ? "images/written.exr" : "images/resampled.exr";
-  EXPECT_EQ(run_povray(dir, "fog.pov +W160 +H90 +FE -A +L. +WT1 +O" + image), 0) << log_of(dir);
-  const std::vector<float> rgb = read_rgb(dir / image);
+  const std::vector<float> rgb = testing::trace_linear(
+      dir, samples.empty() ? "written" : "resampled",
+      "#declare RT_Flash=0;\n#include \"fog.inc\"\n", "+W160 +H90 -A +L. +WT1");
   std::vector<float> green;
   for (std::size_t i = 1; i < rgb.size(); i += 3) green.push_back(rgb[i]);
   return green;
