@@ -5,22 +5,17 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vector>
 
-#include "povgen/output_folder.h"
 #include "povgen/povray_test_support.h"
-#include "povgen/templates.h"
 
 namespace raintrace::povgen {
 namespace {
 
 namespace fs = std::filesystem;
-
-using testing::log_of;
-using testing::read_rgb;
-using testing::run_povray;
 
 constexpr int kSize = 200;
 
@@ -58,18 +53,10 @@ TEST(PovRayLampStreak, AStreetlightsStreakIsItsLensForeshortenedAsTheRoadSeesIt)
   SKIP_WITHOUT_POVRAY();
   const fs::path dir = testing::folder_with_street("povray_test_lamp_streak");
   const std::string lamp = "RT_LampStreak(<0, 5.88, 22>, 40, <1, 1, 1>, ";
-  write_file_atomic(dir / "down.pov", mirror_scene(lamp + "1)"));
-  write_file_atomic(dir / "facing.pov", mirror_scene(lamp + "0)"));
-  write_file_atomic(dir / "none.pov", mirror_scene(""));
-  const std::string size = " +W" + std::to_string(kSize) + " +H" + std::to_string(kSize);
-  for (const char* name : {"down", "facing", "none"}) {
-    ASSERT_EQ(run_povray(dir, std::string(name) + ".pov" + size + " -A +FE +O" + name + ".exr"), 0)
-        << name << ":\n"
-        << log_of(dir);
-  }
-  const auto down = read_rgb(dir / "down.exr");
-  const auto facing = read_rgb(dir / "facing.exr");
-  const auto none = read_rgb(dir / "none.exr");
+  const std::string options = "+W" + std::to_string(kSize) + " +H" + std::to_string(kSize) + " -A";
+  const auto down = testing::trace_linear(dir, "down", mirror_scene(lamp + "1)"), options);
+  const auto facing = testing::trace_linear(dir, "facing", mirror_scene(lamp + "0)"), options);
+  const auto none = testing::trace_linear(dir, "none", mirror_scene(""), options);
   ASSERT_EQ(down.size(), 3u * kSize * kSize);
   ASSERT_EQ(facing.size(), down.size());
   ASSERT_EQ(none.size(), down.size());
