@@ -1,0 +1,80 @@
+// How much light night_street's wet road scatters back, with the real POV-Ray (ctest label
+// `povray`; skipped without povray). A wet surface is darker than a dry one because light
+// scattered up by the ground is mostly reflected back down at the water's surface (total internal
+// reflection beyond 49°) and the ground absorbs part of it again: Lekner and Dorf, "Why some
+// things are darker when wet", Applied Optics 27, 1278 (1988). The road's diffuse albedo must be
+// what their model gives for asphalt as streets have it.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "povgen/povray_test_support.h"
+
+namespace raintrace::povgen {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kRoadPixels = 200;
+
+// Lekner and Dorf's wet albedo of a surface of dry albedo `dry` under a water layer of index n:
+// light gets in (1 − r_e), the ground scatters `dry` of it, the water's surface lets 1 − ρ_i of
+// that out and sends ρ_i back down, where the ground scatters `dry` of it again, and so on:
+// (1 − r_e) · dry · (1 − ρ_i) / (1 − dry · ρ_i). r_e is water's reflectance for diffuse light
+// from outside, 0.066 for n = 1.33; from inside, ρ_i = 1 − (1 − r_e) / n², 0.47 (their eq. 2).
+double lekner_dorf_wet_albedo(double dry) {
+  const double n = 1.33, outside = 0.066;
+  const double inside = 1.0 - (1.0 - outside) / (n * n);
+  return (1.0 - outside) * dry * (1.0 - inside) / (1.0 - dry * inside);
+}
+
+// The road far behind the street's end (z = −200, where nothing stands), seen straight down by
+// an orthographic camera over 40 m × 40 m, so that its patches of lighter and darker asphalt
+// average out. `sun` adds a parallel light of 1 from straight above. The road's own specular
+// highlight, which such a light would put right where the camera looks, is turned off: it is the
+// water's mirror image of the light, not light the road scatters; the rest of its finish (diffuse,
+// the water's Fresnel reflection that conserve_energy takes from it) stays.
+std::string road_scene(bool sun) {
+  return std::string(
+             "#version 3.7;\n"
+             "global_settings { assumed_gamma 1 }\n"
+             "#declare RT_Preview = 0;\n"
+             "#include \"night_street.inc\"\n"
+             "camera { orthographic location <0, 5, -200> look_at <0, 0, -200> "
+             "right x * 40 up z * 40 }\n"
+             "box { <-20, 0, -220>, <20, 0.001, -180> texture { RT_Asphalt finish { specular 0 } } "
+             "}\n") +
+         (sun ? "light_source { <0, 1000, -200> rgb 1 parallel point_at <0, 0, -200> }\n" : "");
+}
+
+// Asphalt pavements measured by Lawrence Berkeley National Laboratory's Heat Island Group have a
+// dry albedo of about 0.04 when freshly paved, the bitumen coating the stones, rising within five
+// years to a mean of 0.12, and none above 0.16, as traffic wears the bitumen off the aggregate.
+// Wet, by Lekner and Dorf: 0.020 to 0.083. The street's road must scatter within that span.
+TEST(PovRayWetRoad, ScattersWhatWetAsphaltDoes) {
+  SKIP_WITHOUT_POVRAY();
+  const fs::path dir = testing::folder_with_street("povray_test_wet_road");
+  const std::string options =
+      "+W" + std::to_string(kRoadPixels) + " +H" + std::to_string(kRoadPixels) + " -A";
+  const auto lit = testing::trace_linear(dir, "lit", road_scene(true), options);
+  const auto dark = testing::trace_linear(dir, "dark", road_scene(false), options);
+  ASSERT_EQ(lit.size(), 3u * kRoadPixels * kRoadPixels);
+  ASSERT_EQ(dark.size(), lit.size());
+  double scattered = 0.0;
+  for (std::size_t i = 0; i < lit.size(); ++i) scattered += lit[i] - dark[i];
+  // Lit by irradiance 1 from straight above, a Lambertian surface of albedo A shows A in
+  // POV-Ray's units (no 1/π on either side).
+  const double albedo = scattered / static_cast<double>(lit.size());
+  const double fresh = lekner_dorf_wet_albedo(0.04), worn = lekner_dorf_wet_albedo(0.16);
+  std::printf("wet road's albedo %.4f; wet asphalt %.4f (fresh) to %.4f (worn)\n", albedo, fresh,
+              worn);
+  EXPECT_GE(albedo, fresh);
+  EXPECT_LE(albedo, worn);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace raintrace::povgen
