@@ -59,8 +59,7 @@ TEST(PovRayLampGlow, TheGlowIsAsStrongAsTheMistAroundTheLamp) {
   const std::string shallow =
       "#declare RT_GroundFogDensity = 0.015;\n#declare RT_GroundFogDepth = 1.5;\n";
   const std::string none;
-  const std::string options =
-      "+W" + std::to_string(kGlowSize) + " +H" + std::to_string(kGlowSize) + " -A";
+  const std::string options = testing::square_size(kGlowSize) + " -A";
   const auto render = [&](const std::string& name, const std::string& fog, bool glow) {
     return testing::trace_linear(dir, name, glow_scene(fog, glow), options);
   };
@@ -139,7 +138,7 @@ TEST(PovRayLampGlow, MistDiffractsAHaloAsWideAsItsDropletsMakeIt) {
   std::printf("mist droplets of 5 µm: g = %.4f, half the halo within %.2f°\n", g,
               std::sqrt(3.0) * width * 180 / M_PI);
   constexpr int kHalo = 200;
-  const std::string options = "+W" + std::to_string(kHalo) + " +H" + std::to_string(kHalo) + " -A";
+  const std::string options = testing::square_size(kHalo) + " -A";
   const double lens_height = 5.88 - 1.45;
   for (const double distance : {20.0, 30.0, 100.0}) {
     const auto with = testing::trace_linear(dir, "halo", halo_scene(distance, 0.5), options);

@@ -53,7 +53,7 @@ TEST(PovRayLampStreak, AStreetlightsStreakIsItsLensForeshortenedAsTheRoadSeesIt)
   SKIP_WITHOUT_POVRAY();
   const fs::path dir = testing::folder_with_street("povray_test_lamp_streak");
   const std::string lamp = "RT_LampStreak(<0, 5.88, 22>, 40, <1, 1, 1>, ";
-  const std::string options = "+W" + std::to_string(kSize) + " +H" + std::to_string(kSize) + " -A";
+  const std::string options = testing::square_size(kSize) + " -A";
   const auto down = testing::trace_linear(dir, "down", mirror_scene(lamp + "1)"), options);
   const auto facing = testing::trace_linear(dir, "facing", mirror_scene(lamp + "0)"), options);
   const auto none = testing::trace_linear(dir, "none", mirror_scene(""), options);
@@ -103,8 +103,7 @@ TEST(PovRayLampStreak, AMirrorShowsALampsLightOnce) {
   // theirs, so that its foreshortened image spans a few rows and its light is sampled well.
   const std::string lens =
       "box { <-0.84, -0.0001, -0.36>, <0.84, 0, 0.36> translate <0, 5.95, 22> }";
-  const std::string options =
-      "+W" + std::to_string(kSize) + " +H" + std::to_string(kSize) + " +A0.01 +AM2 +R3";
+  const std::string options = testing::square_size(kSize) + " +A0.01 +AM2 +R3";
   const auto copy = testing::trace_linear(
       dir, "copy", mirror_scene("RT_MirroredLens(" + lens + ", <1, 1, 1>, 40)"), options);
   const auto streak = testing::trace_linear(

@@ -54,6 +54,11 @@ inline std::string log_of(const std::filesystem::path& dir) {
 
 using raintrace::test_support::read_rgb;
 
+/// POV-Ray's options for a square picture `pixels` wide: "+W<pixels> +H<pixels>".
+inline std::string square_size(int pixels) {
+  return "+W" + std::to_string(pixels) + " +H" + std::to_string(pixels);
+}
+
 /// Writes `scene` to dir/NAME.pov, traces it to dir/NAME.exr with `options` (size, antialiasing)
 /// and reads the linear RGB back; a failed trace is a test failure (with POV-Ray's log) and gives
 /// an empty image.

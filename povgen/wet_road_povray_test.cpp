@@ -57,8 +57,7 @@ std::string road_scene(bool sun) {
 TEST(PovRayWetRoad, ScattersWhatWetAsphaltDoes) {
   SKIP_WITHOUT_POVRAY();
   const fs::path dir = testing::folder_with_street("povray_test_wet_road");
-  const std::string options =
-      "+W" + std::to_string(kRoadPixels) + " +H" + std::to_string(kRoadPixels) + " -A";
+  const std::string options = testing::square_size(kRoadPixels) + " -A";
   const auto lit = testing::trace_linear(dir, "lit", road_scene(true), options);
   const auto dark = testing::trace_linear(dir, "dark", road_scene(false), options);
   ASSERT_EQ(lit.size(), 3u * kRoadPixels * kRoadPixels);
