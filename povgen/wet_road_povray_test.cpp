@@ -3,9 +3,11 @@
 // scattered up by the ground is mostly reflected back down at the water's surface (total internal
 // reflection beyond 49°) and the ground absorbs part of it again: Lekner and Dorf, "Why some
 // things are darker when wet", Applied Optics 27, 1278 (1988). The road's diffuse albedo must be
-// what their model gives for asphalt as streets have it.
+// what their model gives for asphalt as streets have it, and of a lamp's light it must reflect
+// nothing beyond the water's mirror image and its glossy streak.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -48,6 +50,63 @@ std::string road_scene(bool sun) {
              "box { <-20, 0, -220>, <20, 0.001, -180> texture { RT_Asphalt finish { specular 0 } } "
              "}\n") +
          (sun ? "light_source { <0, 1000, -200> rgb 1 parallel point_at <0, 0, -200> }\n" : "");
+}
+
+// The same road seen by an orthographic camera tilted `tilt_deg` from straight down, toward −z
+// (the mirror images it sees lie up in the empty sky beyond the street's end), over 30 m × 30 m,
+// with the road's whole finish; 50 m away, so that its picture's plane stays above the road.
+// `sun` as above.
+std::string tilted_road_scene(bool sun, double tilt_deg) {
+  const double tilt = tilt_deg * 3.14159265358979 / 180.0;
+  return "#version 3.7;\n"
+         "global_settings { assumed_gamma 1 }\n"
+         "#declare RT_Preview = 0;\n"
+         "#include \"night_street.inc\"\n"
+         "camera { orthographic location <0, " +
+         std::to_string(50.0 * std::cos(tilt)) + ", " +
+         std::to_string(-200.0 - 50.0 * std::sin(tilt)) +
+         "> look_at <0, 0, -200> right x * 30 up y * 30 }\n"
+         "box { <-20, 0, -220>, <20, 0.001, -180> texture { RT_Asphalt } }\n" +
+         (sun ? "light_source { <0, 1000, -200> rgb 1 parallel point_at <0, 0, -200> }\n" : "");
+}
+
+// The light the road scatters from a parallel light straight above, seen `tilt_deg` from
+// straight down: the mean of lit − dark over the picture, in units of the light's irradiance.
+double scattered_seen_at(const fs::path& dir, double tilt_deg, const std::string& options) {
+  const auto lit =
+      testing::trace_linear(dir, "tilted_lit", tilted_road_scene(true, tilt_deg), options);
+  const auto dark =
+      testing::trace_linear(dir, "tilted_dark", tilted_road_scene(false, tilt_deg), options);
+  EXPECT_EQ(lit.size(), 3u * kRoadPixels * kRoadPixels);
+  EXPECT_EQ(dark.size(), lit.size());
+  if (lit.empty() || dark.size() != lit.size()) return 0.0;
+  double scattered = 0.0;
+  for (std::size_t i = 0; i < lit.size(); ++i) scattered += lit[i] - dark[i];
+  return scattered / static_cast<double>(lit.size());
+}
+
+// A lamp's light the wet road reflects is Fresnel's share, once: the water's mirror image of the
+// lens and the glossy streak around it, about 3° tall and 0.25° wide (night_street's
+// RT_LampStreak). Seen 20° off the mirror direction of a light straight above, neither reaches
+// the camera, so the road must show only its diffuse light, as bright as seen straight down with
+// its highlight turned off (POV-Ray's diffuse does not depend on the view). With a highlight of
+// the light sources as well (specular 0.6, roughness 0.02) it showed 12.2 times that (as
+// drawn: 1.001).
+TEST(PovRayWetRoad, ReflectsALampOnlyInItsMirrorImageAndStreak) {
+  SKIP_WITHOUT_POVRAY();
+  const fs::path dir = testing::folder_with_street("povray_test_wet_road_tilted");
+  const std::string options = testing::square_size(kRoadPixels) + " -A";
+  const auto lit = testing::trace_linear(dir, "lit", road_scene(true), options);
+  const auto dark = testing::trace_linear(dir, "dark", road_scene(false), options);
+  ASSERT_EQ(dark.size(), lit.size());
+  double diffuse = 0.0;
+  for (std::size_t i = 0; i < lit.size(); ++i) diffuse += lit[i] - dark[i];
+  diffuse /= static_cast<double>(lit.size());
+  const double tilted = scattered_seen_at(dir, 20.0, options);
+  std::printf("road seen 20 degrees off the mirror direction: %.4f; its diffuse light %.4f\n",
+              tilted, diffuse);
+  EXPECT_NEAR(tilted / diffuse, 1.0, 0.05) << "the road reflects a lamp off its mirror direction";
+  fs::remove_all(dir);
 }
 
 // Asphalt pavements measured by Lawrence Berkeley National Laboratory's Heat Island Group have a
