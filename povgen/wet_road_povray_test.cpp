@@ -70,19 +70,18 @@ std::string tilted_road_scene(bool sun, double tilt_deg) {
          (sun ? "light_source { <0, 1000, -200> rgb 1 parallel point_at <0, 0, -200> }\n" : "");
 }
 
-// The light the road scatters from a parallel light straight above, seen `tilt_deg` from
-// straight down: the mean of lit − dark over the picture, in units of the light's irradiance.
-double scattered_seen_at(const fs::path& dir, double tilt_deg, const std::string& options) {
-  const auto lit =
-      testing::trace_linear(dir, "tilted_lit", tilted_road_scene(true, tilt_deg), options);
-  const auto dark =
-      testing::trace_linear(dir, "tilted_dark", tilted_road_scene(false, tilt_deg), options);
+// What a surface sends the camera from a light: the mean of lit − dark over the pictures of the
+// scene with and without the light (POV-Ray's linear EXR), in units of the light's irradiance.
+double scattered(const fs::path& dir, const std::string& name, const std::string& lit_scene,
+                 const std::string& dark_scene, const std::string& options) {
+  const auto lit = testing::trace_linear(dir, name + "_lit", lit_scene, options);
+  const auto dark = testing::trace_linear(dir, name + "_dark", dark_scene, options);
   EXPECT_EQ(lit.size(), 3u * kRoadPixels * kRoadPixels);
   EXPECT_EQ(dark.size(), lit.size());
   if (lit.empty() || dark.size() != lit.size()) return 0.0;
-  double scattered = 0.0;
-  for (std::size_t i = 0; i < lit.size(); ++i) scattered += lit[i] - dark[i];
-  return scattered / static_cast<double>(lit.size());
+  double sum = 0.0;
+  for (std::size_t i = 0; i < lit.size(); ++i) sum += lit[i] - dark[i];
+  return sum / static_cast<double>(lit.size());
 }
 
 // A lamp's light the wet road reflects is Fresnel's share, once: the water's mirror image of the
@@ -96,13 +95,9 @@ TEST(PovRayWetRoad, ReflectsALampOnlyInItsMirrorImageAndStreak) {
   SKIP_WITHOUT_POVRAY();
   const fs::path dir = testing::folder_with_street("povray_test_wet_road_tilted");
   const std::string options = testing::square_size(kRoadPixels) + " -A";
-  const auto lit = testing::trace_linear(dir, "lit", road_scene(true), options);
-  const auto dark = testing::trace_linear(dir, "dark", road_scene(false), options);
-  ASSERT_EQ(dark.size(), lit.size());
-  double diffuse = 0.0;
-  for (std::size_t i = 0; i < lit.size(); ++i) diffuse += lit[i] - dark[i];
-  diffuse /= static_cast<double>(lit.size());
-  const double tilted = scattered_seen_at(dir, 20.0, options);
+  const double diffuse = scattered(dir, "top", road_scene(true), road_scene(false), options);
+  const double tilted = scattered(dir, "tilted", tilted_road_scene(true, 20.0),
+                                  tilted_road_scene(false, 20.0), options);
   std::printf("road seen 20 degrees off the mirror direction: %.4f; its diffuse light %.4f\n",
               tilted, diffuse);
   EXPECT_NEAR(tilted / diffuse, 1.0, 0.05) << "the road reflects a lamp off its mirror direction";
@@ -117,15 +112,9 @@ TEST(PovRayWetRoad, ScattersWhatWetAsphaltDoes) {
   SKIP_WITHOUT_POVRAY();
   const fs::path dir = testing::folder_with_street("povray_test_wet_road");
   const std::string options = testing::square_size(kRoadPixels) + " -A";
-  const auto lit = testing::trace_linear(dir, "lit", road_scene(true), options);
-  const auto dark = testing::trace_linear(dir, "dark", road_scene(false), options);
-  ASSERT_EQ(lit.size(), 3u * kRoadPixels * kRoadPixels);
-  ASSERT_EQ(dark.size(), lit.size());
-  double scattered = 0.0;
-  for (std::size_t i = 0; i < lit.size(); ++i) scattered += lit[i] - dark[i];
   // Lit by irradiance 1 from straight above, a Lambertian surface of albedo A shows A in
   // POV-Ray's units (no 1/π on either side).
-  const double albedo = scattered / static_cast<double>(lit.size());
+  const double albedo = scattered(dir, "top", road_scene(true), road_scene(false), options);
   const double fresh = lekner_dorf_wet_albedo(0.04), worn = lekner_dorf_wet_albedo(0.16);
   std::printf("wet road's albedo %.4f; wet asphalt %.4f (fresh) to %.4f (worn)\n", albedo, fresh,
               worn);
