@@ -4,7 +4,8 @@
 // reflection beyond 49°) and the ground absorbs part of it again: Lekner and Dorf, "Why some
 // things are darker when wet", Applied Optics 27, 1278 (1988). The road's diffuse albedo must be
 // what their model gives for asphalt as streets have it, and of a lamp's light it must reflect
-// nothing beyond the water's mirror image and its glossy streak.
+// nothing beyond the water's mirror image and its glossy streak. The pavement's puddles must
+// show the slabs beneath them.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -33,24 +34,26 @@ double lekner_dorf_wet_albedo(double dry) {
   return (1.0 - outside) * dry * (1.0 - inside) / (1.0 - dry * inside);
 }
 
-// The road far behind the street's end (z = −200, where nothing stands), seen straight down by
-// an orthographic camera over 40 m × 40 m, so that its patches of lighter and darker asphalt
-// average out. `sun` adds a parallel light of 1 from straight above. The road's own specular
-// highlight, which such a light would put right where the camera looks, is turned off: it is the
-// water's mirror image of the light, not light the road scatters; the rest of its finish (diffuse,
-// the water's Fresnel reflection that conserve_energy takes from it) stays.
-std::string road_scene(bool sun) {
-  return std::string(
-             "#version 3.7;\n"
-             "global_settings { assumed_gamma 1 }\n"
-             "#declare RT_Preview = 0;\n"
-             "#include \"night_street.inc\"\n"
-             "camera { orthographic location <0, 5, -200> look_at <0, 0, -200> "
-             "right x * 40 up z * 40 }\n"
-             "box { <-20, 0, -220>, <20, 0.001, -180> texture { RT_Asphalt finish { specular 0 } } "
-             "}\n") +
+// Ground far behind the street's end (z = −200, where nothing stands) in `texture`, seen straight
+// down by an orthographic camera over 40 m × 40 m, so that its patches of lighter and darker
+// asphalt or slabs average out. `sun` adds a parallel light of 1 from straight above.
+std::string top_view_scene(const std::string& texture, bool sun) {
+  return "#version 3.7;\n"
+         "global_settings { assumed_gamma 1 }\n"
+         "#declare RT_Preview = 0;\n"
+         "#include \"night_street.inc\"\n"
+         "camera { orthographic location <0, 5, -200> look_at <0, 0, -200> "
+         "right x * 40 up z * 40 }\n"
+         "box { <-20, 0, -220>, <20, 0.001, -180> texture { " +
+         texture + " } }\n" +
          (sun ? "light_source { <0, 1000, -200> rgb 1 parallel point_at <0, 0, -200> }\n" : "");
 }
+
+// The road so. Its own specular highlight, which such a light would put right where the camera
+// looks, is turned off: it is the water's mirror image of the light, not light the road scatters;
+// the rest of its finish (diffuse, the water's Fresnel reflection that conserve_energy takes from
+// it) stays.
+std::string road_scene(bool sun) { return top_view_scene("RT_Asphalt finish { specular 0 }", sun); }
 
 // The same road seen by an orthographic camera tilted `tilt_deg` from straight down, toward −z
 // (the mirror images it sees lie up in the empty sky beyond the street's end), over 30 m × 30 m,
@@ -120,6 +123,25 @@ TEST(PovRayWetRoad, ScattersWhatWetAsphaltDoes) {
               worn);
   EXPECT_GE(albedo, fresh);
   EXPECT_LE(albedo, worn);
+  fs::remove_all(dir);
+}
+
+// A puddle on the pavement is the wet slab under a few millimetres of water, which absorb next to
+// nothing: seen from straight above under a black sky (the water mirrors nothing), lit from above,
+// it must scatter what the slabs do (docs/ground.md: "A puddle is the wet ground under a mirror,
+// not a dark patch"). Its bed was near black until 2026-12-02: 0.25 of the slabs' light.
+TEST(PovRayWetPavement, PuddlesShowTheSlabsBeneathTheirWater) {
+  SKIP_WITHOUT_POVRAY();
+  const fs::path dir = testing::folder_with_street("povray_test_wet_pavement");
+  const std::string options = testing::square_size(kRoadPixels) + " -A";
+  const std::string slabs = "RT_Slabs finish { specular 0 }";
+  const std::string puddle = "RT_SlabPuddle finish { specular 0 }";
+  const double slab_light =
+      scattered(dir, "slabs", top_view_scene(slabs, true), top_view_scene(slabs, false), options);
+  const double puddle_light = scattered(dir, "puddle", top_view_scene(puddle, true),
+                                        top_view_scene(puddle, false), options);
+  std::printf("pavement puddle %.4f against the slabs' %.4f\n", puddle_light, slab_light);
+  EXPECT_NEAR(puddle_light / slab_light, 1.0, 0.1) << "the puddle's bed is not the slab beneath it";
   fs::remove_all(dir);
 }
 
