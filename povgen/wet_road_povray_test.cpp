@@ -34,19 +34,23 @@ double lekner_dorf_wet_albedo(double dry) {
   return (1.0 - outside) * dry * (1.0 - inside) / (1.0 - dry * inside);
 }
 
-// Ground far behind the street's end (z = −200, where nothing stands) in `texture`, seen straight
-// down by an orthographic camera over 40 m × 40 m, so that its patches of lighter and darker
-// asphalt or slabs average out. `sun` adds a parallel light of 1 from straight above.
-std::string top_view_scene(const std::string& texture, bool sun) {
+// Ground far behind the street's end (z = −200, where nothing stands) in `texture`, 40 m × 40 m,
+// seen by `camera`. `sun` adds a parallel light of 1 from straight above.
+std::string far_ground_scene(const std::string& camera, const std::string& texture, bool sun) {
   return "#version 3.7;\n"
          "global_settings { assumed_gamma 1 }\n"
          "#declare RT_Preview = 0;\n"
-         "#include \"night_street.inc\"\n"
-         "camera { orthographic location <0, 5, -200> look_at <0, 0, -200> "
-         "right x * 40 up z * 40 }\n"
-         "box { <-20, 0, -220>, <20, 0.001, -180> texture { " +
-         texture + " } }\n" +
+         "#include \"night_street.inc\"\n" +
+         camera + "\nbox { <-20, 0, -220>, <20, 0.001, -180> texture { " + texture + " } }\n" +
          (sun ? "light_source { <0, 1000, -200> rgb 1 parallel point_at <0, 0, -200> }\n" : "");
+}
+
+// The ground seen straight down by an orthographic camera over all of it, so that its patches of
+// lighter and darker asphalt or slabs average out.
+std::string top_view_scene(const std::string& texture, bool sun) {
+  return far_ground_scene(
+      "camera { orthographic location <0, 5, -200> look_at <0, 0, -200> right x * 40 up z * 40 }",
+      texture, sun);
 }
 
 // The road so. Its own specular highlight, which such a light would put right where the camera
@@ -55,22 +59,16 @@ std::string top_view_scene(const std::string& texture, bool sun) {
 // it) stays.
 std::string road_scene(bool sun) { return top_view_scene("RT_Asphalt finish { specular 0 }", sun); }
 
-// The same road seen by an orthographic camera tilted `tilt_deg` from straight down, toward −z
-// (the mirror images it sees lie up in the empty sky beyond the street's end), over 30 m × 30 m,
-// with the road's whole finish; 50 m away, so that its picture's plane stays above the road.
-// `sun` as above.
+// The road seen by an orthographic camera tilted `tilt_deg` from straight down, toward −z (the
+// mirror images it sees lie up in the empty sky beyond the street's end), over 30 m × 30 m, with
+// the road's whole finish; 50 m away, so that its picture's plane stays above the road.
 std::string tilted_road_scene(bool sun, double tilt_deg) {
-  const double tilt = tilt_deg * 3.14159265358979 / 180.0;
-  return "#version 3.7;\n"
-         "global_settings { assumed_gamma 1 }\n"
-         "#declare RT_Preview = 0;\n"
-         "#include \"night_street.inc\"\n"
-         "camera { orthographic location <0, " +
-         std::to_string(50.0 * std::cos(tilt)) + ", " +
-         std::to_string(-200.0 - 50.0 * std::sin(tilt)) +
-         "> look_at <0, 0, -200> right x * 30 up y * 30 }\n"
-         "box { <-20, 0, -220>, <20, 0.001, -180> texture { RT_Asphalt } }\n" +
-         (sun ? "light_source { <0, 1000, -200> rgb 1 parallel point_at <0, 0, -200> }\n" : "");
+  const double tilt = tilt_deg * M_PI / 180.0;
+  return far_ground_scene("camera { orthographic location <0, " +
+                              std::to_string(50.0 * std::cos(tilt)) + ", " +
+                              std::to_string(-200.0 - 50.0 * std::sin(tilt)) +
+                              "> look_at <0, 0, -200> right x * 30 up y * 30 }",
+                          "RT_Asphalt", sun);
 }
 
 // What a surface sends the camera from a light: the mean of lit − dark over the pictures of the
