@@ -97,6 +97,16 @@ void check_aperture_blades(const TableReader& r, const Scene& scene) {
   }
 }
 
+/// A white balance is a colour temperature on the Planckian locus, or off.
+void check_white_balance(const TableReader& r, const Scene& scene) {
+  const double kelvin = scene.develop.white_balance_k;
+  if (kelvin != 0.0 && kelvin < film::kMinWhiteBalanceK) {  // the table's range leaves (0, 2000)
+    r.fail("white_balance_k",
+           fmt::format("must be 0 (off: D65 white, the colours as traced) or in [{}, {}] K, got {}",
+                       film::kMinWhiteBalanceK, film::kMaxWhiteBalanceK, kelvin));
+  }
+}
+
 /// Where to blame a camera problem: look_at when the file gives it, else position.
 std::string_view camera_key(const TableReader& r) {
   return r.where("look_at") ? "look_at" : "position";
@@ -167,6 +177,7 @@ void read_section(TableReader& r, Scene& scene) {
   if (section == "camera") {
     check_camera(r, scene.sim.camera);
     check_aperture_blades(r, scene);
+    check_white_balance(r, scene);
   }
   if (section == "wind") normalise_gust_direction(r, scene.sim.wind);
   if (section == "environment") check_include(r, scene.look.environment, scene.base_dir);

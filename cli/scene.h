@@ -13,6 +13,7 @@
 #include "film/grain.h"
 #include "film/sensor_noise.h"
 #include "film/softness.h"
+#include "film/white_balance.h"
 #include "povgen/export_params.h"
 #include "sim/param_table.h"
 #include "sim/params.h"
@@ -35,7 +36,8 @@ struct Scene {
   sim::SimParams sim;  ///< camera is filled identically in sim and look
   povgen::ExportParams look;
   /// How the rendered HDR frames are developed into PNGs ([camera] exposure_ev, view, look,
-  /// bloom, softness, grain, sensor_noise, vignette, aperture_blades). Changing only these
+  /// white_balance_k, bloom, softness, grain, sensor_noise, vignette, aperture_blades). Changing
+  /// only these
   /// re-develops a folder without rendering it.
   film::DevelopSettings develop;
 };
@@ -50,6 +52,9 @@ inline constexpr sim::Param<Scene> kSceneParams[] = {
 inline constexpr sim::Param<film::DevelopSettings> kDevelopParams[] = {
     sim::number("camera", "exposure_ev", &film::DevelopSettings::exposure_ev, "stops",
                 sim::Range::closed(-film::kExposureLimitEv, film::kExposureLimitEv)),
+    // 0 (off) or [2000, 20000]: the gap is checked with the section (scene.cpp).
+    sim::number("camera", "white_balance_k", &film::DevelopSettings::white_balance_k, "K",
+                sim::Range::closed(0, film::kMaxWhiteBalanceK)),
     sim::choice<&film::DevelopSettings::view>("camera", "view", film::kViewNames),
     sim::choice<&film::DevelopSettings::look>("camera", "look", film::kLookNames),
     sim::number("camera", "bloom", &film::DevelopSettings::bloom, "share of the light",

@@ -367,6 +367,13 @@ TEST(SceneErrors, CrossFieldRules) {
             "t.toml:2:19: camera.aperture_blades: needs camera.aperture_m > 0: the spikes' length "
             "comes from the opening's size");
   EXPECT_EQ(load("[camera]\naperture_m = 0.008\naperture_blades = 6\n").develop.aperture_blades, 6);
+  // A white balance: off, or a colour temperature the blackbody fit covers.
+  EXPECT_EQ(error_of("[camera]\nwhite_balance_k = 1500\n"),
+            "t.toml:2:19: camera.white_balance_k: must be 0 (off: D65 white, the colours as "
+            "traced) or in [2000, 20000] K, got 1500");
+  EXPECT_EQ(error_of("[camera]\nwhite_balance_k = 30000\n"),
+            "t.toml:2:19: camera.white_balance_k: must be in [0, 20000], got 30000");
+  EXPECT_EQ(load("[camera]\nwhite_balance_k = 3500\n").develop.white_balance_k, 3500);
 }
 
 TEST(SceneErrors, SectionThatIsNotATable) {

@@ -16,6 +16,7 @@
 #include "film/sensor_noise.h"
 #include "film/softness.h"
 #include "film/vignette.h"
+#include "film/white_balance.h"
 
 namespace raintrace::film {
 
@@ -33,6 +34,9 @@ void check_range(const char* name, double value, double lo, double hi) {
 
 void validate(const DevelopSettings& settings) {
   check_range("exposure_ev", settings.exposure_ev, -kExposureLimitEv, kExposureLimitEv);
+  if (settings.white_balance_k != 0.0) {
+    check_range("white_balance_k", settings.white_balance_k, kMinWhiteBalanceK, kMaxWhiteBalanceK);
+  }
   check_range("bloom", settings.bloom, 0.0, 1.0);
   check_range("softness", settings.softness, 0.0, kMaxSoftness);
   check_range("grain", settings.grain, 0.0, kMaxGrain);
@@ -48,6 +52,9 @@ std::string describe(const DevelopSettings& settings) {
   const std::string look =
       settings.view == View::filmic ? fmt::format(" look={}", to_string(settings.look)) : "";
   // Keys added since pictures were first described are named only when on.
+  const std::string balance = settings.white_balance_k != 0.0
+                                  ? fmt::format(" white_balance_k={}", settings.white_balance_k)
+                                  : "";
   const std::string softness =
       settings.softness != 0.0 ? fmt::format(" softness={}", settings.softness) : "";
   const std::string noise =
@@ -55,9 +62,9 @@ std::string describe(const DevelopSettings& settings) {
   const std::string blades = settings.aperture_blades != 0
                                  ? fmt::format(" aperture_blades={}", settings.aperture_blades)
                                  : "";
-  return fmt::format("{} exposure_ev={} view={}{} bloom={}{} grain={}{} vignette={}{}", kDescribed,
-                     settings.exposure_ev, to_string(settings.view), look, settings.bloom, softness,
-                     settings.grain, noise, settings.vignette, blades);
+  return fmt::format("{} exposure_ev={}{} view={}{} bloom={}{} grain={}{} vignette={}{}",
+                     kDescribed, settings.exposure_ev, balance, to_string(settings.view), look,
+                     settings.bloom, softness, settings.grain, noise, settings.vignette, blades);
 }
 
 std::string describe(const DevelopSettings& settings, const FrameContext& frame) {
@@ -100,7 +107,8 @@ std::optional<DevelopDescription> parse_description(std::string_view text) {
     return std::nullopt;
   }
   for (const auto& [key, value] :
-       {std::pair{"softness", &s.softness}, std::pair{"sensor_noise", &s.sensor_noise}}) {
+       {std::pair{"white_balance_k", &s.white_balance_k}, std::pair{"softness", &s.softness},
+        std::pair{"sensor_noise", &s.sensor_noise}}) {
     if (fields.contains(key) && !number(key, *value)) return std::nullopt;
   }
   if (fields.contains("aperture_blades") &&
@@ -120,6 +128,7 @@ RgbImage develop(const RgbImage& linear, const DevelopSettings& settings, const 
                  const DisplayTransform& display) {
   validate(settings);
   RgbImage image = linear;
+  apply_white_balance(image, settings.white_balance_k);
   apply_exposure(image, settings.exposure_ev);
   apply_vignette(image, settings.vignette, frame.fov_deg);
   apply_diffraction_spikes(image, {settings.aperture_blades, frame.aperture_m}, frame.fov_deg);

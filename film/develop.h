@@ -1,9 +1,9 @@
 // Developing a frame: the rendered scene-linear HDR frame → the picture a camera would show.
-// The order follows the light: exposure, the lens (vignetting, the iris's diffraction spikes,
-// its softness, then glare scattered inside it), the sensor's noise, the film's response (Filmic
-// via OpenColorIO), then grain in the developed picture.
+// The order follows the light: the camera's white balance and exposure, the lens (vignetting,
+// the iris's diffraction spikes, its softness, then glare scattered inside it), the sensor's
+// noise, the film's response (Filmic via OpenColorIO), then grain in the developed picture.
 //
-//   linear ─exposure_ev─▶ ─vignette (cos⁴)─▶ ─diffraction spikes─▶ ─softness─▶
+//   linear ─white balance─▶ ─exposure_ev─▶ ─vignette (cos⁴)─▶ ─diffraction spikes─▶ ─softness─▶
 //   ─bloom (energy-conserving)─▶ ─sensor noise─▶ ─view + look─▶ ─grain─▶ display sRGB ─8-bit─▶ PNG
 //
 // Usage:
@@ -28,6 +28,10 @@ namespace raintrace::film {
 struct DevelopSettings {
   /// Exposure in stops, [−16, 16]; 0 = scene values as rendered (0.18 → display 0.5). Default 0.
   double exposure_ev = 0.0;
+  /// The colour temperature (K) the camera is balanced for, [2000, 20000], or 0 (see
+  /// white_balance.h): light of that temperature develops as grey. Default 0: D65 is white, the
+  /// frame's colours as traced.
+  double white_balance_k = 0.0;
   /// Display view. Default filmic.
   View view = View::filmic;
   /// Filmic contrast look (filmic view only; the standard view ignores it). Default
@@ -72,8 +76,9 @@ void validate(const DevelopSettings& settings);
 
 /// One line recording the settings, e.g. "raintrace develop: exposure_ev=-1 view=filmic
 /// look=medium-high-contrast bloom=0.04 grain=0 vignette=0" (no look with the standard view;
-/// "softness=…" after bloom, "sensor_noise=…" after grain and "aperture_blades=…" last only
-/// when they are not 0, so pictures developed before they existed keep their description).
+/// "white_balance_k=…" after exposure_ev, "softness=…" after bloom, "sensor_noise=…" after grain
+/// and "aperture_blades=…" last only when they are not 0, so pictures developed before they
+/// existed keep their description).
 /// Numbers in their shortest exact form, so parse_description() gives the same settings back.
 std::string describe(const DevelopSettings& settings);
 /// The same followed by the frame: "… fov_deg=60 seed=1 frame=16", with " aperture_m=…" after
@@ -87,7 +92,8 @@ struct DevelopDescription {
   FrameContext frame;
 };
 /// Reads describe(settings, frame) back; nullopt for any other text (a PNG raintrace did not
-/// develop), a missing field (softness, sensor_noise and aperture_blades may be missing: 0;
+/// develop), a missing field (white_balance_k, softness, sensor_noise and aperture_blades may be
+/// missing: 0;
 /// aperture_m must be there when aperture_blades is not 0), or a value out of range.
 std::optional<DevelopDescription> parse_description(std::string_view text);
 

@@ -23,6 +23,7 @@
 #include "film/sensor_noise.h"
 #include "film/softness.h"
 #include "film/vignette.h"
+#include "film/white_balance.h"
 #include "tests/support/command.h"
 
 namespace raintrace::film {
@@ -66,6 +67,7 @@ TEST(Develop, MiddleGreyAtZeroStopsIsHalfAndEachStopOfExposureCountsTwice) {
 TEST(Develop, RunsTheStepsInTheOrderOfTheLight) {
   const RgbImage linear = ramp(48, 20);
   const DevelopSettings settings{.exposure_ev = -1.5,
+                                 .white_balance_k = 3500,
                                  .look = Look::high_contrast,
                                  .bloom = 0.2,
                                  .softness = 2.0,
@@ -75,6 +77,7 @@ TEST(Develop, RunsTheStepsInTheOrderOfTheLight) {
                                  .aperture_blades = 5};
   const FrameContext frame{.fov_deg = 70.0, .seed = 9, .frame = 4, .aperture_m = 0.001};
   RgbImage by_hand = linear;
+  apply_white_balance(by_hand, 3500);  // on the sensor's raw signal, as a camera does
   apply_exposure(by_hand, -1.5);
   apply_vignette(by_hand, 0.7, 70.0);
   apply_diffraction_spikes(by_hand, {5, 0.001}, 70.0);  // at the iris, before the glass's blur
@@ -110,6 +113,11 @@ TEST(Develop, ValidateNamesTheSettingOutOfRange) {
   EXPECT_EQ(message(s), "(accepted)");
   s.exposure_ev = 20;
   EXPECT_NE(message(s).find("exposure_ev"), std::string::npos);
+  s = {};
+  s.white_balance_k = 1500;
+  EXPECT_NE(message(s).find("white_balance_k"), std::string::npos);
+  s.white_balance_k = 25000;
+  EXPECT_NE(message(s).find("white_balance_k"), std::string::npos);
   s = {};
   s.bloom = -0.5;
   EXPECT_NE(message(s).find("bloom"), std::string::npos);
@@ -153,6 +161,10 @@ TEST(Develop, DescribeRecordsEverySetting) {
   EXPECT_EQ(describe({.softness = 1, .grain = 0, .sensor_noise = 0.1}),
             "raintrace develop: exposure_ev=0 view=filmic look=medium-high-contrast bloom=0.04 "
             "softness=1 grain=0 sensor_noise=0.1 vignette=0.5");
+  // So is the white balance, after the exposure.
+  EXPECT_EQ(describe({.white_balance_k = 3500}),
+            "raintrace develop: exposure_ev=0 white_balance_k=3500 view=filmic "
+            "look=medium-high-contrast bloom=0.04 grain=0.02 vignette=0.5");
   // So are the iris's blades, and with them the opening the spikes need, after fov_deg.
   EXPECT_EQ(describe({.aperture_blades = 6}, {.fov_deg = 50, .frame = 3, .aperture_m = 0.008}),
             "raintrace develop: exposure_ev=0 view=filmic look=medium-high-contrast bloom=0.04 "
@@ -177,8 +189,11 @@ TEST(Develop, DescriptionReadsBackToTheSameSettingsAndFrame) {
   const auto standard = parse_description(describe({.view = View::standard}, frame));
   ASSERT_TRUE(standard.has_value());
   EXPECT_EQ(standard->settings.view, View::standard);
-  const auto noisy = parse_description(describe({.softness = 0.75, .sensor_noise = 0.15}, frame));
+  const auto noisy = parse_description(
+      describe({.white_balance_k = 3250.5, .softness = 0.75, .sensor_noise = 0.15}, frame));
   ASSERT_TRUE(noisy.has_value());
+  EXPECT_EQ(noisy->settings.white_balance_k, 3250.5);
+  EXPECT_EQ(back->settings.white_balance_k, 0.0);  // not named: off
   EXPECT_EQ(noisy->settings.softness, 0.75);
   EXPECT_EQ(noisy->settings.sensor_noise, 0.15);
   EXPECT_EQ(back->settings.softness, 0.0);  // not named: none
@@ -194,6 +209,7 @@ TEST(Develop, DescriptionReadsBackToTheSameSettingsAndFrame) {
   EXPECT_FALSE(parse_description(describe(s)));
   EXPECT_FALSE(parse_description(describe({.bloom = 2}, frame)));
   EXPECT_FALSE(parse_description(describe({.sensor_noise = 0.7}, frame)));
+  EXPECT_FALSE(parse_description(describe({.white_balance_k = 100}, frame)));
   EXPECT_FALSE(parse_description(describe({.aperture_blades = 6}, frame)));  // no opening
   EXPECT_FALSE(parse_description(describe(s, frame) + " extra"));
 }

@@ -83,6 +83,7 @@ DevelopRecord develop_record_from_json(const json& object) {
 json develop_spec_to_json(const DevelopSpec& spec) {
   const film::DevelopSettings& s = spec.settings;
   return {{"exposure_ev", s.exposure_ev},
+          {"white_balance_k", s.white_balance_k},
           {"view", std::string{film::to_string(s.view)}},
           {"look", std::string{film::to_string(s.look)}},
           {"bloom", s.bloom},
@@ -109,6 +110,7 @@ DevelopSpec develop_spec_from_json(const json& object) {
   s.view = *parsed_view;
   s.look = *parsed_look;
   s.bloom = field<double>(object, "bloom", s.bloom);
+  s.white_balance_k = field<double>(object, "white_balance_k", s.white_balance_k);
   s.softness = field<double>(object, "softness", s.softness);
   s.grain = field<double>(object, "grain", s.grain);
   s.sensor_noise = field<double>(object, "sensor_noise", s.sensor_noise);

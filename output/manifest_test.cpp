@@ -49,6 +49,7 @@ Manifest sample() {
   f.developed.file_hash = "9999";
   f.developed.seconds = 0.125;
   m.develop.settings = {.exposure_ev = -1.5,
+                        .white_balance_k = 3200,
                         .view = film::View::filmic,
                         .look = film::Look::high_contrast,
                         .bloom = 0.1,
