@@ -1,0 +1,89 @@
+// night_street's lights shine in their blackbodies' colours, with the real POV-Ray (label
+// `povray`; skipped without it). The template declares each lamp's light as linear sRGB, the
+// colour POV-Ray traces with (assumed_gamma 1, D65 white); the camera's white balance
+// (film/white_balance.h) decides how warm it looks. Here POV-Ray reads the template and prints
+// the colours, and each must be the blackbody that film/ computes at the lamp's temperature, at
+// the luminance the template gives it. Until 2026-12-02 the template held sRGB-encoded values
+// (<1, 0.78, 0.52> for "3000 K", the light of a blackbody near 4700 K), and this failed.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <map>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "film/white_balance.h"
+#include "povgen/povray_test_support.h"
+
+namespace raintrace {
+namespace {
+
+using povgen::testing::folder_with_street;
+using povgen::testing::log_of;
+using povgen::testing::run_povray;
+
+/// The colours `names` as POV-Ray reads them from night_street.inc, by name.
+std::map<std::string, std::array<double, 3>> street_colours(const std::vector<std::string>& names) {
+  const auto dir = folder_with_street("lamp_colours");
+  std::string scene =
+      "#version 3.7;\n"
+      "global_settings { assumed_gamma 1 }\n"
+      "#declare RT_CameraPosition = <0, 1.6, -5>;\n"
+      "#declare RT_LightsOnly = 1;\n"
+      "#include \"night_street.inc\"\n"
+      "camera { location RT_CameraPosition look_at <0, 1.6, 0> }\n";
+  for (const std::string& name : names) {
+    scene +=
+        "#debug concat(\"colour " + name + " \", vstr(3, " + name + ", \" \", 0, 6), \"\\n\")\n";
+  }
+  povgen::write_file_atomic(dir / "colours.pov", scene);
+  // Without -GA: #debug writes to the debug stream, which -GA would silence.
+  EXPECT_EQ(run_povray(dir, "colours.pov +W8 +H8 +FE +Ocolours.exr"), 0) << log_of(dir);
+  std::map<std::string, std::array<double, 3>> colours;
+  const std::string log = povgen::read_file_bytes(dir / "povray.log");
+  const std::regex line(R"(colour (\w+) ([-0-9.]+) ([-0-9.]+) ([-0-9.]+))");
+  for (auto it = std::sregex_iterator(log.begin(), log.end(), line); it != std::sregex_iterator();
+       ++it) {
+    colours[(*it)[1]] = {std::stod((*it)[2]), std::stod((*it)[3]), std::stod((*it)[4])};
+  }
+  return colours;
+}
+
+double luminance(const std::array<double, 3>& rgb) {
+  return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
+}
+
+struct Light {
+  std::string name;
+  double kelvin;
+  double luminance;
+};
+
+TEST(PovRayStreetLights, ShineInTheirBlackbodiesColours) {
+  SKIP_WITHOUT_POVRAY();
+  // The streetlights: warm-white LEDs, a neutral LED, high-pressure sodium (whose light lies by
+  // the locus near 2000 K), all at one luminance, so a lamp's kind changes its hue only.
+  // The windows' tungsten and LED light come from the same blackbodies, at luminance 1.
+  const std::vector<Light> lights = {
+      {"RT_LampColour", 3000, 0.81},   {"RT_LampNeutral", 4000, 0.81},
+      {"RT_LampSodium", 2000, 0.81},   {"RT_Blackbody2000", 2000, 1.0},
+      {"RT_Blackbody2700", 2700, 1.0}, {"RT_Blackbody3000", 3000, 1.0},
+      {"RT_Blackbody4000", 4000, 1.0}};
+  std::vector<std::string> names;
+  for (const Light& light : lights) names.push_back(light.name);
+  const auto colours = street_colours(names);
+  for (const Light& light : lights) {
+    ASSERT_TRUE(colours.contains(light.name)) << light.name << " not printed";
+    const std::array<double, 3>& colour = colours.at(light.name);
+    EXPECT_NEAR(luminance(colour), light.luminance, 0.002) << light.name;
+    const std::array<double, 3> blackbody = film::blackbody_rgb(light.kelvin);
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(colour[c] / luminance(colour), blackbody[c], 0.002)
+          << light.name << " channel " << c << " against " << light.kelvin << " K";
+    }
+  }
+}
+
+}  // namespace
+}  // namespace raintrace
