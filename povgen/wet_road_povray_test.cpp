@@ -35,22 +35,24 @@ double lekner_dorf_wet_albedo(double dry) {
 }
 
 // Ground far behind the street's end (z = −200, where nothing stands) in `texture`, 40 m × 40 m,
-// seen by `camera`. `sun` adds a parallel light of 1 from straight above.
-std::string far_ground_scene(const std::string& camera, const std::string& texture, bool sun) {
+// seen by `camera`. `sun` adds a parallel light of 1 from straight above. `before` is declared
+// ahead of the template, as scene.inc declares the ground include's functions.
+std::string far_ground_scene(const std::string& camera, const std::string& texture, bool sun,
+                             const std::string& before = "") {
   return "#version 3.7;\n"
          "global_settings { assumed_gamma 1 }\n"
-         "#declare RT_Preview = 0;\n"
-         "#include \"night_street.inc\"\n" +
-         camera + "\nbox { <-20, 0, -220>, <20, 0.001, -180> texture { " + texture + " } }\n" +
+         "#declare RT_Preview = 0;\n" +
+         before + "#include \"night_street.inc\"\n" + camera +
+         "\nbox { <-20, 0, -220>, <20, 0.001, -180> texture { " + texture + " } }\n" +
          (sun ? "light_source { <0, 1000, -200> rgb 1 parallel point_at <0, 0, -200> }\n" : "");
 }
 
 // The ground seen straight down by an orthographic camera over all of it, so that its patches of
 // lighter and darker asphalt or slabs average out.
-std::string top_view_scene(const std::string& texture, bool sun) {
+std::string top_view_scene(const std::string& texture, bool sun, const std::string& before = "") {
   return far_ground_scene(
       "camera { orthographic location <0, 5, -200> look_at <0, 0, -200> right x * 40 up z * 40 }",
-      texture, sun);
+      texture, sun, before);
 }
 
 // The road so. Its own specular highlight, which such a light would put right where the camera
@@ -140,6 +142,35 @@ TEST(PovRayWetPavement, PuddlesShowTheSlabsBeneathTheirWater) {
                                         top_view_scene(puddle, false), options);
   std::printf("pavement puddle %.4f against the slabs' %.4f\n", puddle_light, slab_light);
   EXPECT_NEAR(puddle_light / slab_light, 1.0, 0.1) << "the puddle's bed is not the slab beneath it";
+  fs::remove_all(dir);
+}
+
+// Rain roughens standing water wherever it stands: the pavement's puddles must take the water
+// surface the ground include draws for the road's (RT_PuddleHeight, its rings and the finer
+// roughness of the impacts), not lie flat beside them. Seen from straight above under a light
+// straight above, level water sends the light's highlight straight back to the camera; water
+// tilted by the ground's height field, here a uniform slope of 0.2 (11°), sends it 23° away,
+// where the highlight (roughness 0.002) has faded to nothing. Until 2026-12-02 the pavement's
+// puddles were level whatever the ground said: the same light both ways.
+TEST(PovRayWetPavement, PuddlesTakeTheRainsRoughnessFromTheGround) {
+  SKIP_WITHOUT_POVRAY();
+  const fs::path dir = testing::folder_with_street("povray_test_pavement_rain");
+  const std::string options = testing::square_size(kRoadPixels) + " -A";
+  const auto water = [](double slope) {
+    return "#declare RT_PuddleHeight = function(x, y, z) { " + std::to_string(slope) + " * x }\n";
+  };
+  const double level = scattered(dir, "level", top_view_scene("RT_SlabPuddle", true, water(0)),
+                                 top_view_scene("RT_SlabPuddle", false, water(0)), options);
+  const double tilted = scattered(dir, "tilted", top_view_scene("RT_SlabPuddle", true, water(0.2)),
+                                  top_view_scene("RT_SlabPuddle", false, water(0.2)), options);
+  const double bed =
+      scattered(dir, "bed", top_view_scene("RT_SlabPuddle finish { specular 0 }", true),
+                top_view_scene("RT_SlabPuddle finish { specular 0 }", false), options);
+  std::printf("pavement puddle under a light above: level %.4f, tilted %.4f, its bed alone %.4f\n",
+              level, tilted, bed);
+  // Level, the highlight (specular 0.6) adds to the bed's light; tilted, the bed's light is left.
+  EXPECT_GT(level - bed, 0.3) << "level water sends no highlight back";
+  EXPECT_NEAR(tilted, bed, 0.05 * bed) << "the puddle ignores the ground's water surface";
   fs::remove_all(dir);
 }
 
