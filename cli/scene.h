@@ -35,10 +35,9 @@ struct Scene {
   int frames = 48;     ///< length of the animation
   sim::SimParams sim;  ///< camera is filled identically in sim and look
   povgen::ExportParams look;
-  /// How the rendered HDR frames are developed into PNGs ([camera] exposure_ev, view, look,
-  /// white_balance_k, bloom, softness, grain, sensor_noise, vignette, aperture_blades). Changing
-  /// only these
-  /// re-develops a folder without rendering it.
+  /// How the rendered HDR frames are developed into PNGs ([camera] exposure_ev, white_balance_k,
+  /// view, look, bloom, softness, grain, sensor_noise, vignette, aperture_blades). Changing only
+  /// these re-develops a folder without rendering it.
   film::DevelopSettings develop;
 };
 
