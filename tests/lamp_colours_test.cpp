@@ -1,13 +1,15 @@
-// night_street's lights shine in their blackbodies' colours, with the real POV-Ray (label
-// `povray`; skipped without it). The template declares each lamp's light as linear sRGB, the
+// The environments' lights shine in their blackbodies' colours, with the real POV-Ray (label
+// `povray`; skipped without it). A template declares each lamp's light as linear sRGB, the
 // colour POV-Ray traces with (assumed_gamma 1, D65 white); the camera's white balance
 // (film/white_balance.h) decides how warm it looks. Here POV-Ray reads the template and prints
 // the colours, and each must be the blackbody that film/ computes at the lamp's temperature, at
-// the luminance the template gives it. Until 2026-12-02 the template held sRGB-encoded values
-// (<1, 0.78, 0.52> for "3000 K", the light of a blackbody near 4700 K), and this failed.
+// the luminance the template gives it. Until 2026-12-02 night_street's and closeup's templates
+// held sRGB-encoded values (<1, 0.78, 0.52> for "3000 K", the light of a blackbody near
+// 4700 K), and this failed.
 #include <gtest/gtest.h>
 
 #include <array>
+#include <filesystem>
 #include <map>
 #include <regex>
 #include <string>
@@ -19,20 +21,25 @@
 namespace raintrace {
 namespace {
 
-using povgen::testing::folder_with_street;
 using povgen::testing::log_of;
 using povgen::testing::run_povray;
+using povgen::testing::scratch_folder;
 
-/// The colours `names` as POV-Ray reads them from night_street.inc, by name.
-std::map<std::string, std::array<double, 3>> street_colours(const std::vector<std::string>& names) {
-  const auto dir = folder_with_street("lamp_colours");
+/// The colours `names` as POV-Ray reads them from the built-in `environment`'s template, by
+/// name. `knobs` are declared before it: what keeps the picture cheap.
+std::map<std::string, std::array<double, 3>> environment_colours(
+    const std::string& environment, const std::string& knobs,
+    const std::vector<std::string>& names) {
+  const auto dir = scratch_folder("lamp_colours_" + environment);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  povgen::write_file_atomic(dir / (environment + ".inc"),
+                            povgen::environment_template(environment));
   std::string scene =
       "#version 3.7;\n"
-      "global_settings { assumed_gamma 1 }\n"
-      "#declare RT_CameraPosition = <0, 1.6, -5>;\n"
-      "#declare RT_LightsOnly = 1;\n"
-      "#include \"night_street.inc\"\n"
-      "camera { location RT_CameraPosition look_at <0, 1.6, 0> }\n";
+      "global_settings { assumed_gamma 1 }\n" +
+      knobs + "#include \"" + environment + ".inc\"\n" +
+      "camera { location RT_CameraPosition look_at RT_CameraPosition + z }\n";
   for (const std::string& name : names) {
     scene +=
         "#debug concat(\"colour " + name + " \", vstr(3, " + name + ", \" \", 0, 6), \"\\n\")\n";
@@ -60,19 +67,15 @@ struct Light {
   double luminance;
 };
 
-TEST(PovRayStreetLights, ShineInTheirBlackbodiesColours) {
-  SKIP_WITHOUT_POVRAY();
-  // The streetlights: warm-white LEDs, a neutral LED, high-pressure sodium (whose light lies by
-  // the locus near 2000 K), all at one luminance, so a lamp's kind changes its hue only.
-  // The windows' tungsten and LED light come from the same blackbodies, at luminance 1.
-  const std::vector<Light> lights = {
-      {"RT_LampColour", 3000, 0.81},   {"RT_LampNeutral", 4000, 0.81},
-      {"RT_LampSodium", 2000, 0.81},   {"RT_Blackbody2000", 2000, 1.0},
-      {"RT_Blackbody2700", 2700, 1.0}, {"RT_Blackbody3000", 3000, 1.0},
-      {"RT_Blackbody4000", 4000, 1.0}};
+std::vector<std::string> names_of(const std::vector<Light>& lights) {
   std::vector<std::string> names;
   for (const Light& light : lights) names.push_back(light.name);
-  const auto colours = street_colours(names);
+  return names;
+}
+
+/// Each light as POV-Ray printed it must be its blackbody's colour at its luminance.
+void expect_blackbodies(const std::map<std::string, std::array<double, 3>>& colours,
+                        const std::vector<Light>& lights) {
   for (const Light& light : lights) {
     ASSERT_TRUE(colours.contains(light.name)) << light.name << " not printed";
     const std::array<double, 3>& colour = colours.at(light.name);
@@ -83,6 +86,36 @@ TEST(PovRayStreetLights, ShineInTheirBlackbodiesColours) {
           << light.name << " channel " << c << " against " << light.kelvin << " K";
     }
   }
+}
+
+TEST(PovRayStreetLights, ShineInTheirBlackbodiesColours) {
+  SKIP_WITHOUT_POVRAY();
+  // The streetlights: warm-white LEDs, a neutral LED, high-pressure sodium (whose light lies by
+  // the locus near 2000 K), all at one luminance, so a lamp's kind changes its hue only.
+  // The windows' tungsten and LED light come from the same blackbodies, at luminance 1.
+  const std::vector<Light> lights = {
+      {"RT_LampColour", 3000, 0.81},   {"RT_LampNeutral", 4000, 0.81},
+      {"RT_LampSodium", 2000, 0.81},   {"RT_Blackbody2000", 2000, 1.0},
+      {"RT_Blackbody2700", 2700, 1.0}, {"RT_Blackbody3000", 3000, 1.0},
+      {"RT_Blackbody4000", 4000, 1.0}};
+  expect_blackbodies(environment_colours("night_street",
+                                         "#declare RT_CameraPosition = <0, 1.6, -5>;\n"
+                                         "#declare RT_LightsOnly = 1;\n",
+                                         names_of(lights)),
+                     lights);
+}
+
+// closeup's streetlights are night_street's warm-white LEDs; its windows are lit by tungsten or
+// a warm LED, a cooler LED or a screen.
+TEST(PovRayCloseupLights, ShineInTheirBlackbodiesColours) {
+  SKIP_WITHOUT_POVRAY();
+  const std::vector<Light> lights = {{"RT_LampColour", 3000, 0.81},
+                                     {"RT_WindowWarm", 2700, 0.68},
+                                     {"RT_WindowNeutral", 4000, 0.86},
+                                     {"RT_WindowScreen", 8000, 0.64}};
+  // Preview: no photon pass for the caustic.
+  expect_blackbodies(environment_colours("closeup", "#declare RT_Preview = 1;\n", names_of(lights)),
+                     lights);
 }
 
 }  // namespace
