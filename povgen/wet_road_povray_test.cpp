@@ -4,8 +4,8 @@
 // reflection beyond 49°) and the ground absorbs part of it again: Lekner and Dorf, "Why some
 // things are darker when wet", Applied Optics 27, 1278 (1988). The road's diffuse albedo must be
 // what their model gives for asphalt as streets have it, and of a lamp's light it must reflect
-// nothing beyond the water's mirror image and its glossy streak. The pavement's puddles must
-// show the slabs beneath them.
+// nothing beyond the water's mirror image and its glossy streak. The pavement's slabs lie under
+// the same film and must do the same; the pavement's puddles must show the slabs beneath them.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -61,16 +61,21 @@ std::string top_view_scene(const std::string& texture, bool sun, const std::stri
 // it) stays.
 std::string road_scene(bool sun) { return top_view_scene("RT_Asphalt finish { specular 0 }", sun); }
 
-// The road seen by an orthographic camera tilted `tilt_deg` from straight down, toward −z (the
-// mirror images it sees lie up in the empty sky beyond the street's end), over 30 m × 30 m, with
-// the road's whole finish; 50 m away, so that its picture's plane stays above the road.
-std::string tilted_road_scene(bool sun, double tilt_deg) {
+// The ground in `texture` seen by an orthographic camera tilted `tilt_deg` from straight down,
+// toward −z (the mirror images it sees lie up in the empty sky beyond the street's end), over
+// 30 m × 30 m; 50 m away, so that its picture's plane stays above the ground.
+std::string tilted_ground_scene(const std::string& texture, bool sun, double tilt_deg) {
   const double tilt = tilt_deg * M_PI / 180.0;
   return far_ground_scene("camera { orthographic location <0, " +
                               std::to_string(50.0 * std::cos(tilt)) + ", " +
                               std::to_string(-200.0 - 50.0 * std::sin(tilt)) +
                               "> look_at <0, 0, -200> right x * 30 up y * 30 }",
-                          "RT_Asphalt", sun);
+                          texture, sun);
+}
+
+// The road so, with its whole finish.
+std::string tilted_road_scene(bool sun, double tilt_deg) {
+  return tilted_ground_scene("RT_Asphalt", sun, tilt_deg);
 }
 
 // What a surface sends the camera from a light: the mean of lit − dark over the pictures of the
@@ -104,6 +109,26 @@ TEST(PovRayWetRoad, ReflectsALampOnlyInItsMirrorImageAndStreak) {
   std::printf("road seen 20 degrees off the mirror direction: %.4f; its diffuse light %.4f\n",
               tilted, diffuse);
   EXPECT_NEAR(tilted / diffuse, 1.0, 0.05) << "the road reflects a lamp off its mirror direction";
+  fs::remove_all(dir);
+}
+
+// The pavement's slabs are wet ground under the same water film as the road: a lamp's light they
+// reflect is the film's mirror image of the lens and the streak every mirror sees, no more. Seen
+// 20° off the mirror direction of a light straight above they must show only their diffuse
+// light, as the road does. Until 2026-12-02 they had a Phong highlight of the lamps' light
+// sources as well (specular 0.4, roughness 0.004), a second image of the same light.
+TEST(PovRayWetPavement, ReflectsALampOnlyInItsMirrorImageAndStreak) {
+  SKIP_WITHOUT_POVRAY();
+  const fs::path dir = testing::folder_with_street("povray_test_wet_slabs_tilted");
+  const std::string options = testing::square_size(kRoadPixels) + " -A";
+  const std::string flat = "RT_Slabs finish { specular 0 }";
+  const double diffuse =
+      scattered(dir, "top", top_view_scene(flat, true), top_view_scene(flat, false), options);
+  const double tilted = scattered(dir, "tilted", tilted_ground_scene("RT_Slabs", true, 20.0),
+                                  tilted_ground_scene("RT_Slabs", false, 20.0), options);
+  std::printf("slabs seen 20 degrees off the mirror direction: %.4f; their diffuse light %.4f\n",
+              tilted, diffuse);
+  EXPECT_NEAR(tilted / diffuse, 1.0, 0.05) << "the slabs reflect a lamp off its mirror direction";
   fs::remove_all(dir);
 }
 
