@@ -38,14 +38,20 @@ inline int run_povray(const std::filesystem::path& dir, const std::string& args)
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-/// An empty scratch folder (scratch_folder(name)) holding night_street's template, for scenes
-/// that include it.
-inline std::filesystem::path folder_with_street(const std::string& name) {
+/// An empty scratch folder (scratch_folder(name)) holding the built-in `environment`'s template
+/// as ENVIRONMENT.inc, for scenes that include it.
+inline std::filesystem::path folder_with_environment(const std::string& name,
+                                                     const std::string& environment) {
   const std::filesystem::path dir = scratch_folder(name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
-  write_file_atomic(dir / "night_street.inc", environment_template("night_street"));
+  write_file_atomic(dir / (environment + ".inc"), environment_template(environment));
   return dir;
+}
+
+/// The same with night_street's template.
+inline std::filesystem::path folder_with_street(const std::string& name) {
+  return folder_with_environment(name, "night_street");
 }
 
 inline std::string log_of(const std::filesystem::path& dir) {

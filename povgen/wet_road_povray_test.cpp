@@ -73,11 +73,6 @@ std::string tilted_ground_scene(const std::string& texture, bool sun, double til
                           texture, sun);
 }
 
-// The road so, with its whole finish.
-std::string tilted_road_scene(bool sun, double tilt_deg) {
-  return tilted_ground_scene("RT_Asphalt", sun, tilt_deg);
-}
-
 // What a surface sends the camera from a light: the mean of lit − dark over the pictures of the
 // scene with and without the light (POV-Ray's linear EXR), in units of the light's irradiance.
 double scattered(const fs::path& dir, const std::string& name, const std::string& lit_scene,
@@ -104,8 +99,8 @@ TEST(PovRayWetRoad, ReflectsALampOnlyInItsMirrorImageAndStreak) {
   const fs::path dir = testing::folder_with_street("povray_test_wet_road_tilted");
   const std::string options = testing::square_size(kRoadPixels) + " -A";
   const double diffuse = scattered(dir, "top", road_scene(true), road_scene(false), options);
-  const double tilted = scattered(dir, "tilted", tilted_road_scene(true, 20.0),
-                                  tilted_road_scene(false, 20.0), options);
+  const double tilted = scattered(dir, "tilted", tilted_ground_scene("RT_Asphalt", true, 20.0),
+                                  tilted_ground_scene("RT_Asphalt", false, 20.0), options);
   std::printf("road seen 20 degrees off the mirror direction: %.4f; its diffuse light %.4f\n",
               tilted, diffuse);
   EXPECT_NEAR(tilted / diffuse, 1.0, 0.05) << "the road reflects a lamp off its mirror direction";

@@ -16,13 +16,12 @@
 #include <vector>
 
 #include "povgen/povray_test_support.h"
-#include "povgen/templates.h"
 
 namespace raintrace {
 namespace {
 
 namespace fs = std::filesystem;
-using povgen::testing::scratch_folder;
+using povgen::testing::folder_with_environment;
 using povgen::testing::trace_linear;
 
 constexpr int kPixels = 200;
@@ -47,10 +46,7 @@ std::string drop_from_above(bool photons) {
 
 TEST(PovRayCloseupCaustic, DropsFocusTheirLightOnlyWhereItCanLand) {
   SKIP_WITHOUT_POVRAY();
-  const fs::path dir = scratch_folder("closeup_caustic");
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  povgen::write_file_atomic(dir / "closeup.inc", povgen::environment_template("closeup"));
+  const fs::path dir = folder_with_environment("closeup_caustic", "closeup");
   const std::string options = povgen::testing::square_size(kPixels) + " -A";
   const std::vector<float> with = trace_linear(dir, "with", drop_from_above(true), options);
   const std::vector<float> without = trace_linear(dir, "without", drop_from_above(false), options);

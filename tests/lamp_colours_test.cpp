@@ -9,7 +9,6 @@
 #include <gtest/gtest.h>
 
 #include <array>
-#include <filesystem>
 #include <map>
 #include <regex>
 #include <string>
@@ -21,20 +20,16 @@
 namespace raintrace {
 namespace {
 
+using povgen::testing::folder_with_environment;
 using povgen::testing::log_of;
 using povgen::testing::run_povray;
-using povgen::testing::scratch_folder;
 
 /// The colours `names` as POV-Ray reads them from the built-in `environment`'s template, by
 /// name. `knobs` are declared before it: what keeps the picture cheap.
 std::map<std::string, std::array<double, 3>> environment_colours(
     const std::string& environment, const std::string& knobs,
     const std::vector<std::string>& names) {
-  const auto dir = scratch_folder("lamp_colours_" + environment);
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  povgen::write_file_atomic(dir / (environment + ".inc"),
-                            povgen::environment_template(environment));
+  const auto dir = folder_with_environment("lamp_colours_" + environment, environment);
   std::string scene =
       "#version 3.7;\n"
       "global_settings { assumed_gamma 1 }\n" +
@@ -67,15 +62,13 @@ struct Light {
   double luminance;
 };
 
-std::vector<std::string> names_of(const std::vector<Light>& lights) {
+/// Each light, as POV-Ray reads it from `environment`'s template (with `knobs` declared
+/// before it), must be its blackbody's colour at its luminance.
+void expect_blackbodies(const std::string& environment, const std::string& knobs,
+                        const std::vector<Light>& lights) {
   std::vector<std::string> names;
   for (const Light& light : lights) names.push_back(light.name);
-  return names;
-}
-
-/// Each light as POV-Ray printed it must be its blackbody's colour at its luminance.
-void expect_blackbodies(const std::map<std::string, std::array<double, 3>>& colours,
-                        const std::vector<Light>& lights) {
+  const auto colours = environment_colours(environment, knobs, names);
   for (const Light& light : lights) {
     ASSERT_TRUE(colours.contains(light.name)) << light.name << " not printed";
     const std::array<double, 3>& colour = colours.at(light.name);
@@ -98,10 +91,9 @@ TEST(PovRayStreetLights, ShineInTheirBlackbodiesColours) {
       {"RT_LampSodium", 2000, 0.81},   {"RT_Blackbody2000", 2000, 1.0},
       {"RT_Blackbody2700", 2700, 1.0}, {"RT_Blackbody3000", 3000, 1.0},
       {"RT_Blackbody4000", 4000, 1.0}};
-  expect_blackbodies(environment_colours("night_street",
-                                         "#declare RT_CameraPosition = <0, 1.6, -5>;\n"
-                                         "#declare RT_LightsOnly = 1;\n",
-                                         names_of(lights)),
+  expect_blackbodies("night_street",
+                     "#declare RT_CameraPosition = <0, 1.6, -5>;\n"
+                     "#declare RT_LightsOnly = 1;\n",
                      lights);
 }
 
@@ -114,8 +106,7 @@ TEST(PovRayCloseupLights, ShineInTheirBlackbodiesColours) {
                                      {"RT_WindowNeutral", 4000, 0.86},
                                      {"RT_WindowScreen", 8000, 0.64}};
   // Preview: no photon pass for the caustic.
-  expect_blackbodies(environment_colours("closeup", "#declare RT_Preview = 1;\n", names_of(lights)),
-                     lights);
+  expect_blackbodies("closeup", "#declare RT_Preview = 1;\n", lights);
 }
 
 }  // namespace
