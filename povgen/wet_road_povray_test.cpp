@@ -87,6 +87,22 @@ double scattered(const fs::path& dir, const std::string& name, const std::string
   return sum / static_cast<double>(lit.size());
 }
 
+// What `texture` sends the camera 20° off the mirror direction of a light straight above, over
+// its diffuse light (seen straight down with its own highlight turned off; POV-Ray's diffuse
+// does not depend on the view). `what` names it in the printout.
+double off_mirror_over_diffuse(const fs::path& dir, const std::string& texture,
+                               const std::string& what) {
+  const std::string options = testing::square_size(kRoadPixels) + " -A";
+  const std::string flat = texture + " finish { specular 0 }";
+  const double diffuse =
+      scattered(dir, "top", top_view_scene(flat, true), top_view_scene(flat, false), options);
+  const double tilted = scattered(dir, "tilted", tilted_ground_scene(texture, true, 20.0),
+                                  tilted_ground_scene(texture, false, 20.0), options);
+  std::printf("%s seen 20 degrees off the mirror direction: %.4f; diffuse light %.4f\n",
+              what.c_str(), tilted, diffuse);
+  return tilted / diffuse;
+}
+
 // A lamp's light the wet road reflects is Fresnel's share, once: the water's mirror image of the
 // lens and the glossy streak around it, about 3° tall and 0.25° wide (night_street's
 // RT_LampStreak). Seen 20° off the mirror direction of a light straight above, neither reaches
@@ -97,13 +113,8 @@ double scattered(const fs::path& dir, const std::string& name, const std::string
 TEST(PovRayWetRoad, ReflectsALampOnlyInItsMirrorImageAndStreak) {
   SKIP_WITHOUT_POVRAY();
   const fs::path dir = testing::folder_with_street("povray_test_wet_road_tilted");
-  const std::string options = testing::square_size(kRoadPixels) + " -A";
-  const double diffuse = scattered(dir, "top", road_scene(true), road_scene(false), options);
-  const double tilted = scattered(dir, "tilted", tilted_ground_scene("RT_Asphalt", true, 20.0),
-                                  tilted_ground_scene("RT_Asphalt", false, 20.0), options);
-  std::printf("road seen 20 degrees off the mirror direction: %.4f; its diffuse light %.4f\n",
-              tilted, diffuse);
-  EXPECT_NEAR(tilted / diffuse, 1.0, 0.05) << "the road reflects a lamp off its mirror direction";
+  EXPECT_NEAR(off_mirror_over_diffuse(dir, "RT_Asphalt", "road"), 1.0, 0.05)
+      << "the road reflects a lamp off its mirror direction";
   fs::remove_all(dir);
 }
 
@@ -115,15 +126,8 @@ TEST(PovRayWetRoad, ReflectsALampOnlyInItsMirrorImageAndStreak) {
 TEST(PovRayWetPavement, ReflectsALampOnlyInItsMirrorImageAndStreak) {
   SKIP_WITHOUT_POVRAY();
   const fs::path dir = testing::folder_with_street("povray_test_wet_slabs_tilted");
-  const std::string options = testing::square_size(kRoadPixels) + " -A";
-  const std::string flat = "RT_Slabs finish { specular 0 }";
-  const double diffuse =
-      scattered(dir, "top", top_view_scene(flat, true), top_view_scene(flat, false), options);
-  const double tilted = scattered(dir, "tilted", tilted_ground_scene("RT_Slabs", true, 20.0),
-                                  tilted_ground_scene("RT_Slabs", false, 20.0), options);
-  std::printf("slabs seen 20 degrees off the mirror direction: %.4f; their diffuse light %.4f\n",
-              tilted, diffuse);
-  EXPECT_NEAR(tilted / diffuse, 1.0, 0.05) << "the slabs reflect a lamp off its mirror direction";
+  EXPECT_NEAR(off_mirror_over_diffuse(dir, "RT_Slabs", "slabs"), 1.0, 0.05)
+      << "the slabs reflect a lamp off its mirror direction";
   fs::remove_all(dir);
 }
 
