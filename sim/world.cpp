@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <tuple>
 
 #include "sim/breakup.h"
 #include "sim/merging.h"
@@ -390,6 +391,12 @@ void World::add_ground_effects(Frame& f) const {
                     m_params.seed, m_flying);
   }
   m_flying_until_s = std::max(m_flying_until_s, f.time_s);
+  // In flight order: the impacts are recorded out of time order (sampled slots run ahead of the
+  // volume's drops), so launching them a frame at a time or all at once orders them differently,
+  // and a frame's text would depend on which frames were taken before it.
+  std::ranges::sort(m_flying, [](const FlyingDroplet& a, const FlyingDroplet& b) {
+    return std::tie(a.impact_time_s, a.id) < std::tie(b.impact_time_s, b.id);
+  });
   std::erase_if(m_flying, [&](FlyingDroplet& d) {
     const double age = f.time_s - d.impact_time_s;
     fly(d, age);

@@ -213,6 +213,24 @@ TEST(World, SameSeedGivesIdenticalState) {
   EXPECT_FALSE(same_frame(a.snapshot(1), c.snapshot(1)));
 }
 
+// `raintrace render --frames 16`, a resumed run and a cluster task each take snapshots of only
+// some frames: the frames they share with a whole run must be the same, in the same order.
+TEST(World, AFrameIsTheSameWhicheverFramesWereTakenBeforeIt) {
+  SimParams p = small_scene();
+  p.camera.look_at = {0.0, 0.0, 0.0};  // the ground in front: splashes, near and sampled
+  World every_frame(p), last_only(p);
+  constexpr int kLast = 8;
+  Frame whole_run;
+  for (int n = 1; n <= kLast; ++n) {
+    every_frame.advance_to(n / 24.0);
+    whole_run = every_frame.snapshot(n);
+  }
+  last_only.advance_to(kLast / 24.0);
+  const Frame alone = last_only.snapshot(kLast);
+  ASSERT_GT(whole_run.splashes.size(), 10u);
+  EXPECT_TRUE(same_frame(whole_run, alone));
+}
+
 TEST(World, OneAndTwoThreadsGiveBitIdenticalSnapshots) {
   // Big enough (> 32768 drops) that two threads really split the work.
   SimParams p;
