@@ -86,6 +86,15 @@ SkyFill measure_sky_fill(const fs::path& dir, const std::string& preamble,
   return measured;
 }
 
+// The fill may be no more than the sky sends `surface` ("the road", "the roof").
+void expect_fill_within_the_sky(const SkyFill& measured, const std::string& surface) {
+  std::printf("skylight fill %.4f; the sky's light on %s %.4f\n", measured.fill, surface.c_str(),
+              measured.irradiance);
+  EXPECT_GT(measured.irradiance, 0.0) << surface << " sees no sky";
+  EXPECT_LE(measured.fill, measured.irradiance)
+      << "the fill is more light than the sky sends " << surface;
+}
+
 // The street (preview: the same geometry, cheaper finishes) seen from the middle of the road,
 // 26 m ahead of the default camera, a few centimetres up.
 TEST(PovRayStreetSky, FillIsNoMoreThanTheSkySendsTheRoad) {
@@ -96,11 +105,7 @@ TEST(PovRayStreetSky, FillIsNoMoreThanTheSkySendsTheRoad) {
                                             "#declare RT_CameraPosition = <-1.2, 1.45, -6>;\n"
                                             "#include \"night_street.inc\"\n",
                                             "<0, 0.05, 20>");
-  std::printf("skylight fill %.4f; the sky's light on the middle of the road %.4f\n", measured.fill,
-              measured.irradiance);
-  EXPECT_GT(measured.irradiance, 0.0) << "the road sees no sky";
-  EXPECT_LE(measured.fill, measured.irradiance)
-      << "the fill is more light than the sky sends the road";
+  expect_fill_within_the_sky(measured, "the middle of the road");
   fs::remove_all(dir);
 }
 
@@ -113,11 +118,7 @@ TEST(PovRayCloseupSky, FillIsNoMoreThanTheSkySendsTheRoof) {
                                             "#declare RT_Preview = 1;\n"
                                             "#include \"closeup.inc\"\n",
                                             "<0, 0.004, -0.3>");
-  std::printf("skylight fill %.4f; the sky's light on the roof %.4f\n", measured.fill,
-              measured.irradiance);
-  EXPECT_GT(measured.irradiance, 0.0) << "the roof sees no sky";
-  EXPECT_LE(measured.fill, measured.irradiance)
-      << "the fill is more light than the sky sends the roof";
+  expect_fill_within_the_sky(measured, "the roof");
   fs::remove_all(dir);
 }
 
