@@ -8,6 +8,9 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <map>
+#include <regex>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -75,6 +78,31 @@ inline std::vector<float> trace_linear(const std::filesystem::path& dir, const s
       << name << ":\n"
       << log_of(dir);
   return read_rgb(dir / (name + ".exr"));
+}
+
+/// A line of SDL that prints a value the scene computed to POV-Ray's debug stream, as
+/// "value NAME v1 … vN": `expression` is a float (components 1) or a vector of `components`.
+/// Read the values back with debug_values(); run POV-Ray without -GA, which silences #debug.
+inline std::string debug_value_line(const std::string& name, const std::string& expression,
+                                    int components = 1) {
+  const std::string text =
+      components == 1 ? "str(" + expression + ", 0, 6)"
+                      : "vstr(" + std::to_string(components) + ", " + expression + ", \" \", 0, 6)";
+  return "#debug concat(\"value " + name + " \", " + text + ", \"\\n\")\n";
+}
+
+/// Every value debug_value_line() printed into `log`, by name.
+inline std::map<std::string, std::vector<double>> debug_values(const std::string& log) {
+  std::map<std::string, std::vector<double>> values;
+  const std::regex line(R"(value (\w+)((?: -?[0-9.]+)+))");
+  for (auto it = std::sregex_iterator(log.begin(), log.end(), line); it != std::sregex_iterator();
+       ++it) {
+    std::vector<double>& numbers = values[(*it)[1]];
+    numbers.clear();
+    std::istringstream in{(*it)[2].str()};
+    for (double number; in >> number;) numbers.push_back(number);
+  }
+  return values;
 }
 
 }  // namespace raintrace::povgen::testing

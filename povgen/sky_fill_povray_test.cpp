@@ -16,7 +16,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <regex>
 #include <string>
 #include <vector>
 
@@ -37,9 +36,9 @@ std::string view_from(const std::string& preamble, const std::string& location, 
   return "#version 3.7;\n"
          "global_settings { assumed_gamma 1 }\n" +
          preamble + (sky ? "" : "sky_sphere { pigment { rgb 0 } }\n") +
-         "#debug concat(\"fill \", str(RT_Fill, 0, 6), \"\\n\")\n"
-         "camera { spherical angle 360 180 location " +
-         location + " look_at " + location + " + z }\n";
+         testing::debug_value_line("fill", "RT_Fill") +
+         "camera { spherical angle 360 180 location " + location + " look_at " + location +
+         " + z }\n";
 }
 
 struct SkyFill {
@@ -61,13 +60,12 @@ SkyFill measure_sky_fill(const fs::path& dir, const std::string& preamble,
     return measured;
   }
   // trace_linear runs POV-Ray without -GA, so the #debug line is in the last log.
-  const std::string log = read_file_bytes(dir / "povray.log");
-  std::smatch match;
-  if (!std::regex_search(log, match, std::regex(R"(fill ([0-9.]+))"))) {
+  const auto values = testing::debug_values(read_file_bytes(dir / "povray.log"));
+  if (!values.contains("fill") || values.at("fill").size() != 1) {
     ADD_FAILURE() << "RT_Fill not printed";
     return measured;
   }
-  measured.fill = std::stod(match[1]);
+  measured.fill = values.at("fill")[0];
 
   // Row r looks at elevation 90° − (r + 0.5)·180°/H; a pixel covers cos(elevation)·dλ·dφ of
   // the sphere, and a horizontal surface weights it by sin(elevation).

@@ -10,7 +10,6 @@
 
 #include <array>
 #include <map>
-#include <regex>
 #include <string>
 #include <vector>
 
@@ -20,6 +19,8 @@
 namespace raintrace {
 namespace {
 
+using povgen::testing::debug_value_line;
+using povgen::testing::debug_values;
 using povgen::testing::folder_with_environment;
 using povgen::testing::log_of;
 using povgen::testing::run_povray;
@@ -35,19 +36,13 @@ std::map<std::string, std::array<double, 3>> environment_colours(
       "global_settings { assumed_gamma 1 }\n" +
       knobs + "#include \"" + environment + ".inc\"\n" +
       "camera { location RT_CameraPosition look_at RT_CameraPosition + z }\n";
-  for (const std::string& name : names) {
-    scene +=
-        "#debug concat(\"colour " + name + " \", vstr(3, " + name + ", \" \", 0, 6), \"\\n\")\n";
-  }
+  for (const std::string& name : names) scene += debug_value_line(name, name, 3);
   povgen::write_file_atomic(dir / "colours.pov", scene);
   // Without -GA: #debug writes to the debug stream, which -GA would silence.
   EXPECT_EQ(run_povray(dir, "colours.pov +W8 +H8 +FE +Ocolours.exr"), 0) << log_of(dir);
   std::map<std::string, std::array<double, 3>> colours;
-  const std::string log = povgen::read_file_bytes(dir / "povray.log");
-  const std::regex line(R"(colour (\w+) ([-0-9.]+) ([-0-9.]+) ([-0-9.]+))");
-  for (auto it = std::sregex_iterator(log.begin(), log.end(), line); it != std::sregex_iterator();
-       ++it) {
-    colours[(*it)[1]] = {std::stod((*it)[2]), std::stod((*it)[3]), std::stod((*it)[4])};
+  for (const auto& [name, value] : debug_values(povgen::read_file_bytes(dir / "povray.log"))) {
+    if (value.size() == 3) colours[name] = {value[0], value[1], value[2]};
   }
   return colours;
 }
