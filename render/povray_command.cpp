@@ -65,6 +65,10 @@ void prepare_povray_home(const std::filesystem::path& out_dir) {
   if (!std::filesystem::exists(conf)) std::ofstream{conf};
 }
 
+bool povray_did_not_start(const std::string& log_text) {
+  return log_text.find(kPovrayStartupTimeout) != std::string::npos;
+}
+
 std::vector<std::string> povray_error_lines(const std::string& log_text) {
   std::vector<std::string> lines;
   std::istringstream in{log_text};

@@ -57,4 +57,12 @@ void prepare_povray_home(const std::filesystem::path& out_dir);
 /// POV-Ray's fonts. Empty when the log names no error.
 std::vector<std::string> povray_error_lines(const std::string& log_text);
 
+/// What POV-Ray prints when it gives up before reading anything: its front end waits 3 s for its
+/// own worker thread to start (vfeInitializeTimedOut in its vfe/vfesession.cpp), and a loaded
+/// machine can miss that. Nothing was parsed or traced, so the same command may run again.
+inline constexpr const char* kPovrayStartupTimeout = "Timed out waiting for worker thread startup";
+
+/// True when the log says POV-Ray did not start (kPovrayStartupTimeout).
+bool povray_did_not_start(const std::string& log_text);
+
 }  // namespace raintrace::render

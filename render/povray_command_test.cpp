@@ -94,5 +94,13 @@ TEST(PovErrorLines, StatisticsAloneAreNoError) {
       povray_error_lines("  Parse Time: 0 hours\n  Trace Time: 1 s\nPOV-Ray finished\n").empty());
 }
 
+// The whole log of a POV-Ray 3.7.0.10 that gave up at its start, from a CI run with two test
+// processes tracing beside it: it exited with code 1 and wrote no image.
+TEST(PovStartup, TheWorkerThreadsTimeoutIsADidNotStartAndAParseErrorIsNot) {
+  EXPECT_TRUE(povray_did_not_start("Timed out waiting for worker thread startup\n"));
+  EXPECT_FALSE(povray_did_not_start(kParseErrorLog));
+  EXPECT_FALSE(povray_did_not_start("  Trace Time: 1 s\nPOV-Ray finished\n"));
+}
+
 }  // namespace
 }  // namespace raintrace::render

@@ -21,11 +21,18 @@ using Clock = std::chrono::steady_clock;
 
 struct Running {
   RenderJob job;
+  int attempt = 1;  // how many times POV-Ray was started on this span's first frame
   std::unique_ptr<ChildProcess> process;
   std::vector<std::string> argv;
   std::string log;          // relative to out_dir
   int next_frame = 0;       // first frame of the span not yet promoted
   Clock::time_point since;  // start of next_frame's work (process start or last promotion)
+};
+
+// The rest of a span, to run again ahead of new work.
+struct Retry {
+  RenderJob job;
+  int attempt = 1;
 };
 
 double seconds_since(Clock::time_point t) {
@@ -61,7 +68,7 @@ class Runner {
     // Spans whose every image is promoted. POV-Ray idles ~0.4 s after its last image before it
     // exits; that time no longer holds a job slot, and at the very end it is cut short.
     std::vector<Running> draining;
-    std::deque<RenderJob> retries;  // the rest of failed spans, ahead of new work
+    std::deque<Retry> retries;  // failed spans' frames, ahead of new work
     while (!retries.empty() || !running.empty() || !source.exhausted()) {
       if (stop_requested()) {
         for (auto& r : running) {
@@ -72,15 +79,16 @@ class Runner {
         return false;
       }
       while (static_cast<int>(running.size()) < std::max(1, m_settings.jobs)) {
-        std::optional<RenderJob> job;
+        Retry next;
         if (!retries.empty()) {
-          job = retries.front();
+          next = retries.front();
           retries.pop_front();
+        } else if (const std::optional<RenderJob> job = source.next()) {
+          next.job = *job;
         } else {
-          job = source.next();
+          break;
         }
-        if (!job) break;
-        running.push_back(start(*job));
+        running.push_back(start(next.job, next.attempt));
       }
       bool any_ended = false;
       for (auto it = running.begin(); it != running.end();) {
@@ -116,10 +124,11 @@ class Runner {
     return static_cast<std::uint64_t>(m_settings.width) * m_settings.height * 11 + 65536;
   }
 
-  Running start(const RenderJob& job) {
+  Running start(const RenderJob& job, int attempt) {
     if (m_callbacks.on_started) m_callbacks.on_started(job);
     Running r;
     r.job = job;
+    r.attempt = attempt;
     r.argv = povray_argv(job.pass, job.span, m_settings.digits);
     r.log = fmt::format("logs/{}_{:04d}-{:04d}.log", job.pass == Pass::image ? "image" : "mask",
                         job.span.first, job.span.last);
@@ -160,10 +169,18 @@ class Runner {
     }
   }
 
-  void finish(Running& r, int exit_code, std::deque<RenderJob>& queue) {
+  void finish(Running& r, int exit_code, std::deque<Retry>& queue) {
     promote_ready(r);
     if (r.next_frame > r.job.span.last) return;
     if (stop_requested()) return;  // interrupted, not failed: the next run redoes the rest
+    const std::string log_text = read_text(m_out / r.log);
+    const RenderJob rest{r.job.pass, {r.next_frame, r.job.span.last}};
+    // POV-Ray gave up before reading the scene (a loaded machine): the same frames again.
+    const bool did_not_start = povray_did_not_start(log_text);
+    if (did_not_start && r.attempt < kPovrayStartAttempts) {
+      queue.push_front({rest, r.attempt + 1});
+      return;
+    }
     // POV-Ray says "Cannot access data in file" when its image does not fit: ask the disk.
     output::throw_if_out_of_space(
         m_out, image_bytes(),
@@ -177,7 +194,11 @@ class Runner {
         "cd " + shell_quote_command({m_out.string()}) + " && HOME=. " + shell_quote_command(r.argv);
     failure.exit_code = exit_code;
     failure.log = r.log;
-    failure.error_lines = povray_error_lines(read_text(m_out / r.log));
+    failure.error_lines = povray_error_lines(log_text);
+    if (did_not_start) {
+      failure.error_lines.push_back(
+          fmt::format("POV-Ray did not start, {} times: {}", r.attempt, kPovrayStartupTimeout));
+    }
     if (failure.error_lines.empty()) {
       std::string why;
       output::image_is_complete(
@@ -190,7 +211,7 @@ class Runner {
     // The frames after the failed one were never reached: they get their own process, ahead of
     // the queue so the frame order stays roughly sequential.
     if (r.next_frame < r.job.span.last) {
-      queue.push_front({r.job.pass, {r.next_frame + 1, r.job.span.last}});
+      queue.push_front({{r.job.pass, {r.next_frame + 1, r.job.span.last}}});
     }
   }
 

@@ -66,11 +66,17 @@ class JobSource {
   [[nodiscard]] virtual bool exhausted() const = 0;
 };
 
+/// POV-Ray is started this many times in all on a span whose process ended because it did not
+/// start (povray_did_not_start: its worker thread missed a 3 s deadline on a loaded machine)
+/// before the span's first frame counts as failed.
+inline constexpr int kPovrayStartAttempts = 4;
+
 /// Renders every job; returns false when stopped by settings.stop (finished frames are promoted
 /// and reported first). A span whose process fails at frame f reports f and goes on with
 /// f+1..last in a new process — unless the folder's filesystem is full: then it throws
 /// std::system_error (ENOSPC) naming the frame, since every further frame would fail the same
-/// way. Logs go to out_dir/logs/<pass>_AAAA-BBBB.log.
+/// way — or POV-Ray did not start: then the same frames run again, up to kPovrayStartAttempts
+/// starts in all. Logs go to out_dir/logs/<pass>_AAAA-BBBB.log (each start rewrites its log).
 bool run_povray_jobs(const std::filesystem::path& out_dir, std::deque<RenderJob> jobs,
                      const RunnerSettings& settings, const RunnerCallbacks& callbacks);
 /// The same, with jobs taken from `source` as they become ready, until it is exhausted and
