@@ -174,11 +174,10 @@ class Runner {
     if (r.next_frame > r.job.span.last) return;
     if (stop_requested()) return;  // interrupted, not failed: the next run redoes the rest
     const std::string log_text = read_text(m_out / r.log);
-    const RenderJob rest{r.job.pass, {r.next_frame, r.job.span.last}};
     // POV-Ray gave up before reading the scene (a loaded machine): the same frames again.
     const bool did_not_start = povray_did_not_start(log_text);
     if (did_not_start && r.attempt < kPovrayStartAttempts) {
-      queue.push_front({rest, r.attempt + 1});
+      queue.push_front({{r.job.pass, {r.next_frame, r.job.span.last}}, r.attempt + 1});
       return;
     }
     // POV-Ray says "Cannot access data in file" when its image does not fit: ask the disk.

@@ -54,8 +54,11 @@ render::ProcessSpec raintrace_spec(const std::vector<std::string>& args, const f
   return spec;
 }
 
-Run run_raintrace(const std::vector<std::string>& args, const fs::path& log) {
-  render::ChildProcess child{raintrace_spec(args, log)};
+Run run_raintrace(const std::vector<std::string>& args, const fs::path& log,
+                  const std::map<std::string, std::string>& env) {
+  render::ProcessSpec spec = raintrace_spec(args, log);
+  for (const auto& [name, value] : env) spec.env[name] = value;
+  render::ChildProcess child{spec};
   Run r;
   r.exit_code = child.wait();
   r.output = read_all(log);

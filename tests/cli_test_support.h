@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -20,8 +21,9 @@ struct Run {
 /// The raintrace program (RAINTRACE_BINARY) with `args`, its output going to `log`.
 render::ProcessSpec raintrace_spec(const std::vector<std::string>& args,
                                    const std::filesystem::path& log);
-/// Runs it to the end.
-Run run_raintrace(const std::vector<std::string>& args, const std::filesystem::path& log);
+/// Runs it to the end, with `env` set (or replaced) in its environment.
+Run run_raintrace(const std::vector<std::string>& args, const std::filesystem::path& log,
+                  const std::map<std::string, std::string>& env = {});
 
 /// A small rain scene (about 1 000 drops in view at 64x36, night_street, preview) of `frames`
 /// frames, written to dir/name; `extra` is appended (more TOML).

@@ -109,17 +109,10 @@ std::filesystem::path povray_that_does_not_start(const std::filesystem::path& di
   return bin;
 }
 
-/// `raintrace render FOLDER` with `bin` ahead of the rest of PATH.
-Run run_raintrace_with(const std::filesystem::path& bin, const std::vector<std::string>& args,
-                       const std::filesystem::path& log) {
-  auto spec = raintrace_spec(args, log);
+/// PATH with `bin` ahead of the rest of it.
+std::map<std::string, std::string> path_with(const std::filesystem::path& bin) {
   const char* path = std::getenv("PATH");
-  spec.env["PATH"] = bin.string() + ":" + (path != nullptr ? path : "/usr/bin:/bin");
-  ChildProcess child{spec};
-  Run run;
-  run.exit_code = child.wait();
-  run.output = read_all(log);
-  return run;
+  return {{"PATH", bin.string() + ":" + (path != nullptr ? path : "/usr/bin:/bin")}};
 }
 
 // On a loaded machine POV-Ray sometimes gives up before reading anything (seen in CI: one frame
@@ -130,7 +123,7 @@ TEST_F(PovrayRenderCli, APovrayThatDidNotStartIsStartedAgainOnTheSameFrames) {
   testing::write_test_folder(dir / "out", {.frames = 1});
   const auto bin = povray_that_does_not_start(dir, kPovrayStartAttempts - 1);
   const auto r =
-      run_raintrace_with(bin, {"render", (dir / "out").string(), "--no-movie"}, dir / "log");
+      run_raintrace({"render", (dir / "out").string(), "--no-movie"}, dir / "log", path_with(bin));
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("1 frames rendered, 0 up to date, 0 failed"), std::string::npos)
       << r.output;
@@ -146,7 +139,7 @@ TEST_F(PovrayRenderCli, APovrayThatNeverStartsFailsTheFrameAndSaysWhy) {
   testing::write_test_folder(dir / "out", {.frames = 1});
   const auto bin = povray_that_does_not_start(dir, 1000);
   const auto r =
-      run_raintrace_with(bin, {"render", (dir / "out").string(), "--no-movie"}, dir / "log");
+      run_raintrace({"render", (dir / "out").string(), "--no-movie"}, dir / "log", path_with(bin));
   EXPECT_EQ(r.exit_code, 1) << r.output;  // cli/exit_codes.h: failed
   EXPECT_NE(r.output.find(fmt::format("POV-Ray did not start, {} times: {}", kPovrayStartAttempts,
                                       kPovrayStartupTimeout)),
@@ -158,11 +151,10 @@ TEST_F(PovrayRenderCli, APovrayThatNeverStartsFailsTheFrameAndSaysWhy) {
 TEST_F(PovrayRenderCli, MissingPovrayIsOneClearLineAndExitTwo) {
   const auto dir = testing::fresh_test_dir("cli_nopov");
   testing::write_test_folder(dir / "out", {.frames = 1});
-  auto spec = raintrace_spec({"render", (dir / "out").string()}, dir / "log");
-  spec.env["PATH"] = (dir / "empty-path").string();
-  ChildProcess child{spec};
-  EXPECT_EQ(child.wait(), 2);
-  EXPECT_EQ(read_all(dir / "log"),
+  const auto r = run_raintrace({"render", (dir / "out").string()}, dir / "log",
+                               {{"PATH", (dir / "empty-path").string()}});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.output,
             "raintrace: error: POV-Ray not found: install it with `sudo apt-get install povray`\n");
 }
 
