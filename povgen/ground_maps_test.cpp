@@ -82,9 +82,9 @@ TEST(PuddleMask, SharesFollowThePuddleFieldAndSkyIsDry) {
 
 TEST(RippleMap, ARingIsDrawnRoundItsImpactAndGrowsWithAge) {
   // A 4 mm drop's ring on a puddle seen from 3 m up through 2.7 mm pixels (the rings fully
-  // resolved): the map's heights lie round the impact at the ring's radius, 2.3 cm more a tenth
+  // resolved): the map's heights lie round the impact at the ring's radius, 18 mm more a tenth
   // of a second later. (Weighting by |h| over the growing circle puts the mean w²/r_f beyond
-  // the front: +3.7 mm at 0.1 s, +2 mm at 0.2 s.)
+  // the front: +8.7 mm at 0.2 s, +5.8 mm at 0.3 s. Younger, the packet still reaches the centre.)
   sim::Camera camera;
   camera.position = {0.0, 3.0, -0.5};
   camera.look_at = {0.0, 0.0, 0.3};
@@ -104,9 +104,15 @@ TEST(RippleMap, ARingIsDrawnRoundItsImpactAndGrowsWithAge) {
     }
     return sum / weight;  // (|h|-weighted mean distance from the impact)
   };
-  const double early = radius_of(0.1), late = radius_of(0.2);
-  EXPECT_NEAR(late - early, 0.0231 - 0.0017, 0.003);
-  EXPECT_NEAR(early, 0.004 + 0.0231 + 0.0037, 0.004);
+  // The front at 0.2 and 0.3 s: the crater's edge (4 mm) plus the spread, 36.8 and 55.2 mm.
+  const double front_early = 0.004 + 0.2 * sim::ripple_speed();
+  const double front_late = 0.004 + 0.3 * sim::ripple_speed();
+  const double w = 0.6 * sim::ripple_wavelength();
+  const double early = radius_of(0.2), late = radius_of(0.3);
+  EXPECT_NEAR(early, front_early + w * w / front_early, 0.002);
+  EXPECT_NEAR(late, front_late + w * w / front_late, 0.002);
+  EXPECT_NEAR(late - early, 0.1 * sim::ripple_speed() - (w * w / front_early - w * w / front_late),
+              0.001);
 }
 
 TEST(RippleMap, FilmRipplesStirTheFilmNotTheHeights) {

@@ -53,8 +53,10 @@ struct GroundImpact {
 /// Level of detail of ground effects by the size of a pixel on the ground.
 class GroundDetail {
  public:
-  /// Full detail while a pixel spans at most this much ground, m: half a ripple wavelength
-  /// (the rings are still drawn, sim/ripples.h).
+  /// Full detail while a pixel spans at most this much ground, m: a quarter of a ring's
+  /// wavelength, where a pixel keeps 55 % of a ring's height (sim/ripples.h). Beyond, the
+  /// thinned rings and the renderer's noise (which grows as the pixel filter takes the rings
+  /// away) share the water's roughness.
   static constexpr double kDetailPixel_m = 0.0085;
 
   explicit GroundDetail(const Camera& camera);

@@ -20,15 +20,40 @@ constexpr double kPixelSigma = 2.0 / std::numbers::pi;
 /// The thin film's ripples live h²/ν, kept within [kFilmLifetimeMin, kFilmLifetimeMax] s.
 constexpr double kFilmLifetimeMin = 0.02;
 constexpr double kFilmLifetimeMax = 0.2;
+/// The measured rings' wavenumber, rad/m (0.2 rad/mm), and the share of the drop's kinetic
+/// energy they carry, for the larger of the measured drops (ripples.h).
+constexpr double kRingWavenumber = 200.0;
+constexpr double kRingEnergyShare = 0.01;
+constexpr double kRingReferenceDiameter = 2.8e-3;
 
 }  // namespace
 
 double ripple_speed() {
-  return std::pow(4.0 * kGravity * kWaterSurfaceTension / kWaterDensity, 0.25);
+  // dω/dk of ω² = g·k + (σ/ρ)·k³.
+  const double k = kRingWavenumber;
+  const double capillary = kWaterSurfaceTension / kWaterDensity;
+  const double omega = std::sqrt(kGravity * k + capillary * k * k * k);
+  return (kGravity + 3.0 * capillary * k * k) / (2.0 * omega);
 }
 
-double ripple_wavelength() {
-  return 2.0 * std::numbers::pi * std::sqrt(kWaterSurfaceTension / (kWaterDensity * kGravity));
+double ripple_wavelength() { return 2.0 * std::numbers::pi / kRingWavenumber; }
+
+double ripple_amplitude_per_diameter() {
+  static const double ratio = [] {
+    // A ring's energy, twice its potential and surface energy over the packet (∫∫ ρg·h²/2 +
+    // σ·|∇h|²/2 dA: the cosine's mean square ½, the Gaussian's ∫ = w·√π), is
+    // ½·(ρg + σk²)·a0²·2πr0·w·√π with r0 = D; set it to the measured share of ½·m·v².
+    const double d = kRingReferenceDiameter;
+    const double w = kPacketWidth * ripple_wavelength();
+    const double k = kRingWavenumber;
+    const double kinetic = 0.5 * kWaterDensity * std::numbers::pi / 6.0 * d * d * d *
+                           std::pow(terminal_velocity(d), 2.0);
+    const double per_square_amplitude =
+        0.5 * (kWaterDensity * kGravity + kWaterSurfaceTension * k * k) * 2.0 * std::numbers::pi *
+        d * w * std::sqrt(std::numbers::pi);
+    return std::sqrt(kRingEnergyShare * kinetic / per_square_amplitude) / d;
+  }();
+  return ratio;
 }
 
 Ripple make_ripple(const glm::vec3& position, float diameter_m, double age_s, double water_depth_m,
@@ -39,7 +64,7 @@ Ripple make_ripple(const glm::vec3& position, float diameter_m, double age_s, do
   r.age_s = static_cast<float>(age_s);
   r.on_puddle = on_puddle;
   double lifetime = puddle_lifetime_s;
-  double amplitude = kRippleAmplitudePerDiameter * diameter_m;
+  double amplitude = ripple_amplitude_per_diameter() * diameter_m;
   if (!on_puddle) {
     lifetime = std::clamp(water_depth_m * water_depth_m / kKinematicViscosity, kFilmLifetimeMin,
                           kFilmLifetimeMax);
@@ -56,7 +81,7 @@ Ripple make_ripple(const glm::vec3& position, float diameter_m, double age_s, do
 double ripple_slope_rms(double rate_mm_per_h, double lifetime_s) {
   const double k = 2.0 * std::numbers::pi / ripple_wavelength();
   const double w = kPacketWidth * ripple_wavelength();
-  const double alpha = kRippleAmplitudePerDiameter;
+  const double alpha = ripple_amplitude_per_diameter();
   const double water_m_per_s = rate_mm_per_h * 1e-3 / 3600.0;
   const double mean_square = std::pow(std::numbers::pi, 1.5) * k * k * alpha * alpha * w *
                              lifetime_s / 5.0 * (6.0 / std::numbers::pi) * water_m_per_s;

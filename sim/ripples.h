@@ -1,16 +1,18 @@
 // Ring ripples from drop impacts on standing water, as a height field over the ground.
 //
-// A drop hitting water sends out a packet of capillary-gravity waves. Their phase velocity has
-// a minimum, c_min = (4gσ/ρ)^(1/4) ≈ 0.231 m/s at λ_min = 2π·√(σ/(ρg)) ≈ 1.71 cm, where the
-// group velocity equals it (Lamb, Hydrodynamics §267; Lighthill, Waves in Fluids §3.7). The
-// model draws a ring expanding at c_min with crests λ_min apart (measured rings are longer,
-// ~31 mm, and spread near the group velocity's own minimum, 0.178 m/s: docs/ground.md, "Known
-// limit"): h(r, t) = a(t)·exp(−ξ²/(2w²))·cos(k·ξ), ξ = r − r_f(t),
-// r_f = r0 + c_min·t, k = 2π/λ_min, w = 0.6·λ_min (two crests and a trough). The amplitude
-// spreads with the ring, a ∝ √(r0/r_f) (energy conserved on a circle), starts at
-// a0 = kRippleAmplitudePerDiameter·D and fades to 0 by the ripple's lifetime with (1 − t/T)².
+// A drop hitting water sends out a packet of capillary-gravity waves, ω² = g·k + (σ/ρ)·k³.
+// Raindrop rings are measured at a steady wavenumber of 0.2 rad/mm (λ ≈ 31 mm) for 2.2 and
+// 2.8 mm drops, carrying about 1 % of the drop's kinetic energy (IEEE J. Oceanic Eng. 24(3),
+// 323–332, 1999); theory puts the prevailing waves near the group velocity's minimum, 0.178 m/s
+// at λ ≈ 45 mm (Le Méhauté 1988, J. Fluid Mech. 197). The model draws that measured ring:
+// h(r, t) = a(t)·exp(−ξ²/(2w²))·cos(k·ξ), ξ = r − r_f(t), r_f = r0 + c_g·t, with k = 0.2 rad/mm,
+// c_g = dω/dk there (0.184 m/s: the packet, where the energy is, travels at the group velocity)
+// and w = 0.6·λ (two crests and a trough). The crests ride with the packet: the faster phase
+// speed (0.25 m/s) would move them through it, a detail no pixel shows. The amplitude spreads
+// with the ring, a ∝ √(r0/r_f) (energy conserved on a circle), starts at
+// a0 = ripple_amplitude_per_diameter()·D and fades to 0 by the ripple's lifetime with (1 − t/T)².
 // T is ripples.lifetime_s on a puddle (about half a second: viscous and bottom damping of
-// a 1.7 cm wave are slower, ~2 s for a 5 mm puddle, but the spreading ring has fallen below what
+// a 3 cm wave are slower, ~2 s for a 5 mm puddle, but the spreading ring has fallen below what
 // a reflection shows by then); on the thin film outside puddles the bottom stops the wave
 // within T = h²/ν (0.09 s for 0.3 mm), and the film caps the amplitude at half its depth.
 //
@@ -26,16 +28,16 @@
 
 namespace raintrace::sim {
 
-/// Capillary-gravity minimum: ring speed (m/s) and wavelength (m) for water at 20 °C.
+/// The measured ring: its spreading speed (the group velocity at its wavenumber, m/s) and its
+/// wavelength (m), for water at 20 °C.
 double ripple_speed();
 double ripple_wavelength();
 
-/// First crest height per metre of drop diameter (a 2 mm drop: 0.5 mm; its first ring tilts the
-/// water by ~10° at 1 cm and ~1° at 10 cm, enough to break a reflection). Chosen by eye; the
-/// measured energy of raindrop rings is about 1 % of the drop's kinetic energy, and a 2.8 mm
-/// drop's ring carries 0.45 %, the same order (tested). 0.37 would match it, at 42 % more
-/// POV-Ray time on the default example (docs/ground.md, "Known limit").
-inline constexpr double kRippleAmplitudePerDiameter = 0.25;
+/// First crest height per metre of drop diameter, such that a 2.8 mm drop at its terminal speed
+/// puts 1 % of its kinetic energy into the ring, as measured: 0.34 (a 2 mm drop's first crest
+/// 0.7 mm). One ratio for every size keeps the roughness in closed form (ripple_slope_rms()); the
+/// share then goes as 1/v(D)²: 2 % for a 1.5 mm drop, 0.8 % for a 4 mm one.
+double ripple_amplitude_per_diameter();
 
 /// The ripple of one impact `age_s` after it, or a ripple with lifetime 0 when it has faded
 /// (age >= lifetime) or makes none. water_depth_m: puddle depth or film thickness;
@@ -100,7 +102,7 @@ double film_stir(const Ripple& ripple);
 /// Each ring contributes ∫∫ ½·(k·a(t)·envelope)² dA dt = π^{3/2}·k²·a0²·r0·w·T/5 with
 /// a0 = αD, r0 = D (∝ D³), so summed over the rain's drops per m² and s, whatever their sizes,
 /// the mean square slope is π^{3/2}·k²·α²·w·T/5 · (6/π)·(rain rate in m/s): D³ summed over the
-/// flux is 6/π times the water volume falling per m² and s. 5 mm/h, 0.5 s: 0.011.
+/// flux is 6/π times the water volume falling per m² and s. 5 mm/h, 0.5 s: 0.0114.
 double ripple_slope_rms(double rate_mm_per_h, double lifetime_s);
 
 }  // namespace raintrace::sim

@@ -27,16 +27,17 @@ double crest_radius(const Ripple& r) {
   return best;
 }
 
-TEST(Ripples, RingsMoveAtTheCapillaryGravityMinimum) {
-  // c_min = (4gσ/ρ)^(1/4) = 0.2313 m/s at λ_min = 2π·√(σ/(ρg)) = 17.1 mm: within the 0.2–0.3 m/s
-  // of observed raindrop rings.
-  EXPECT_NEAR(ripple_speed(), 0.2313, 0.0005);
-  EXPECT_NEAR(ripple_wavelength(), 0.01713, 0.0001);
-  // The ring's crest moves out at that speed: 0.1 s apart, 23 mm further.
+TEST(Ripples, RingsAreTheMeasuredOnesAndSpreadAtTheirGroupVelocity) {
+  // Raindrop rings measured at a steady 0.2 rad/mm: λ = 31.4 mm. Their packet spreads at the group
+  // velocity dω/dk there, (g + 3σk²/ρ)/(2ω) = 0.184 m/s: just above the group velocity's minimum
+  // (0.178 m/s at 45 mm), below the phase speed (0.25 m/s).
+  EXPECT_NEAR(ripple_wavelength(), 0.0314, 0.0001);
+  EXPECT_NEAR(ripple_speed(), 0.184, 0.001);
+  // The ring's crest moves out at that speed: 0.1 s apart, 18 mm further.
   const Ripple a = make_ripple({1.0f, 0.0f, 2.0f}, 2e-3f, 0.1, 6e-3, true, 0.5);
   const Ripple b = make_ripple({1.0f, 0.0f, 2.0f}, 2e-3f, 0.2, 6e-3, true, 0.5);
-  EXPECT_NEAR(crest_radius(b) - crest_radius(a), 0.02313, 0.001);
-  EXPECT_NEAR(crest_radius(a), 0.002 + 0.02313, 0.002);
+  EXPECT_NEAR(crest_radius(b) - crest_radius(a), 0.0184, 0.001);
+  EXPECT_NEAR(crest_radius(a), 0.002 + 0.0184, 0.002);
 }
 
 TEST(Ripples, ARingCarriesAboutOnePercentOfTheDropsKineticEnergy) {
@@ -44,7 +45,8 @@ TEST(Ripples, ARingCarriesAboutOnePercentOfTheDropsKineticEnergy) {
   // 1 %" (2.2 and 2.8 mm drops, IEEE J. Oceanic Eng. 24(3), 1999). A wave's energy is twice its
   // potential and surface energy, ∫∫ ρg·h²/2 + σ·|∇h|²/2 dA, summed here over a snapshot of a
   // 2.8 mm drop's ring 0.2 s old (5 cm out, clear of the centre), with a 5 s lifetime whose
-  // fade, (1 − t/T)² on the amplitude, is divided out: the energy it started with (0.45 %).
+  // fade, (1 − t/T)² on the amplitude, is divided out: the energy it started with. The closed
+  // form the amplitude is set by leaves out the envelope's own slope (a few per cent).
   const double d = 2.8e-3, age = 0.2, lifetime = 5.0;
   const Ripple r =
       make_ripple({0.0f, 0.0f, 0.0f}, static_cast<float>(d), age, 6e-3, true, lifetime);
@@ -61,8 +63,7 @@ TEST(Ripples, ARingCarriesAboutOnePercentOfTheDropsKineticEnergy) {
   energy /= std::pow(1.0 - age / lifetime, 4.0);
   const double mass = kWaterDensity * std::numbers::pi / 6.0 * d * d * d;
   const double kinetic = 0.5 * mass * std::pow(terminal_velocity(d), 2.0);
-  EXPECT_GT(energy / kinetic, 0.003);
-  EXPECT_LT(energy / kinetic, 0.03);
+  EXPECT_NEAR(energy / kinetic, 0.01, 0.0008);
 }
 
 TEST(Ripples, PuddleRingsFadeWithinTheirLifetimeAndFilmOnesFaster) {
@@ -99,26 +100,26 @@ TEST(Ripples, SlopeIsTheGradientOfTheHeight) {
 }
 
 TEST(Ripples, WideningPixelsSmoothTheRingsAway) {
-  // Square pixels of 3 mm keep exp(−(2π/λ·0.64·0.003)²/2) = 78 % of a 17 mm ring; of 3 cm
-  // (twice its wavelength), nothing visible.
+  // Square pixels of 3 mm keep exp(−(2π/λ·0.64·0.003)²/2) = 93 % of a 31 mm ring; of 3 cm
+  // (about a pixel a wavelength), nothing visible.
   const Ripple r = make_ripple({0.0f, 0.0f, 0.0f}, 2e-3f, 0.1, 6e-3, true, 0.5);
   const double radius = crest_radius(r);
   const double sharp = ripple_at(r, radius, 0.0).height;
-  EXPECT_NEAR(ripple_at(r, radius, 0.0, {0.003, 0.003, 1.0, 0.0}).height / sharp, 0.78, 0.01);
+  EXPECT_NEAR(ripple_at(r, radius, 0.0, {0.003, 0.003, 1.0, 0.0}).height / sharp, 0.93, 0.01);
   EXPECT_LT(ripple_at(r, radius, 0.0, {0.03, 0.03, 1.0, 0.0}).height / sharp, 1e-3);
   EXPECT_EQ(ripple_at(r, radius + ripple_reach(r), 0.0).height, 0.0);
 }
 
 TEST(Ripples, SlantSmoothsTheRingWhereItRunsAlongTheLineOfSight) {
   // Seen along +x through pixels 3 mm across and 12 mm deep: the ring's crest on the x axis
-  // (its wave runs along the line of sight) is smoothed by the 12 mm span to exp(−3.9) ≈ 2 %,
-  // the one on the z axis (across) only by the 3 mm one, to 78 %.
+  // (its wave runs along the line of sight) is smoothed by the 12 mm span to exp(−1.17) ≈ 31 %,
+  // the one on the z axis (across) only by the 3 mm one, to 93 %.
   const Ripple r = make_ripple({0.0f, 0.0f, 0.0f}, 2e-3f, 0.1, 6e-3, true, 0.5);
   const double radius = crest_radius(r);
   const PixelSpan span{0.003, 0.012, 1.0, 0.0};
   const double sharp = ripple_at(r, radius, 0.0).height;
-  EXPECT_NEAR(ripple_at(r, 0.0, radius, span).height / sharp, 0.78, 0.01);
-  EXPECT_NEAR(ripple_at(r, radius, 0.0, span).height / sharp, 0.02, 0.005);
+  EXPECT_NEAR(ripple_at(r, 0.0, radius, span).height / sharp, 0.93, 0.01);
+  EXPECT_NEAR(ripple_at(r, radius, 0.0, span).height / sharp, 0.31, 0.01);
 }
 
 TEST(Ripples, RoughnessOfRainedOnWaterMatchesTheClosedForm) {
@@ -153,8 +154,8 @@ TEST(Ripples, RoughnessOfRainedOnWaterMatchesTheClosedForm) {
       const double x = x0 - 0.5 + 0.05 * i, z = -0.5 + 0.05 * j;
       if (world.puddles().depth_m(x, z) < 5.9e-3) continue;  // deep inside: full depth
       double sx = 0.0, sz = 0.0;
-      for (int a = -3; a <= 3; ++a) {
-        for (int b = -3; b <= 3; ++b) {
+      for (int a = -4; a <= 4; ++a) {
+        for (int b = -4; b <= 4; ++b) {
           const auto it = cells.find({cell(x) + a, cell(z) + b});
           if (it == cells.end()) continue;
           for (const Ripple* r : it->second) {
