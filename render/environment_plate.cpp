@@ -72,15 +72,20 @@ EnvironmentPlate::EnvironmentPlate(std::filesystem::path out_dir, int width, int
   std::filesystem::remove(m_out / kPlateImage);
   std::filesystem::create_directories(m_out / "logs");
   std::filesystem::create_directories(m_out / temp_dir_name());
-  std::filesystem::remove(m_out / environment_plate_temp_name());
   prepare_povray_home(m_out);
+  start_povray();
+  m_started = true;
+}
+
+void EnvironmentPlate::start_povray() {
+  std::filesystem::remove(m_out / environment_plate_temp_name());
   ProcessSpec spec;
   spec.argv = environment_plate_argv();
   spec.working_dir = m_out;
   spec.env = povray_env(m_out);
   spec.log_path = m_out / kPlateLog;
   m_process = std::make_unique<ChildProcess>(spec);
-  m_started = true;
+  ++m_starts;
 }
 
 // ChildProcess's own destructor stops a POV-Ray still running.
@@ -108,6 +113,14 @@ void EnvironmentPlate::wait(const std::function<void()>& on_tick) {
 }
 
 void EnvironmentPlate::finish(int exit_code) {
+  const std::string log_text = exit_code != 0 ? read_text(m_out / kPlateLog) : std::string{};
+  // POV-Ray gave up before reading plate.ini (a loaded machine): start it again, as the frames'
+  // runner does, since without a plate every frame traces the whole environment.
+  const bool did_not_start = povray_did_not_start(log_text);
+  if (did_not_start && m_starts < kPovrayStartAttempts) {
+    start_povray();
+    return;
+  }
   m_done = true;
   const auto temp = m_out / environment_plate_temp_name();
   if (exit_code != 0) {
@@ -116,7 +129,11 @@ void EnvironmentPlate::finish(int exit_code) {
         m_out, static_cast<std::uint64_t>(m_width) * m_height * 8 + 65536,
         fmt::format("POV-Ray could not write the environment plate into {} (log {})",
                     m_out.string(), kPlateLog));
-    auto lines = povray_error_lines(read_text(m_out / kPlateLog));
+    auto lines = povray_error_lines(log_text);
+    if (did_not_start) {
+      lines.push_back(
+          fmt::format("POV-Ray did not start, {} times: {}", m_starts, kPovrayStartupTimeout));
+    }
     std::string reason;
     for (const auto& line : lines) reason += (reason.empty() ? "" : " | ") + line;
     fail(fmt::format("povray plate.ini exited with code {}{}{}", exit_code,

@@ -32,7 +32,9 @@ std::string environment_plate_inputs_hash(const std::filesystem::path& out_dir);
 /// Brings out_dir's plate up to date. Construction decides and starts; poll() or wait() finish.
 /// No plate.ini: nothing to do. Plate current (image decodes at width×height and the sidecar
 /// holds the inputs' hash): nothing to do. Otherwise the old plate and sidecar are removed at
-/// once and POV-Ray renders plate.ini in the background (log in kPlateLog).
+/// once and POV-Ray renders plate.ini in the background (log in kPlateLog). A POV-Ray that gave
+/// up before starting (povray_did_not_start) is started again, up to kPovrayStartAttempts
+/// starts in all; each start rewrites the log.
 class EnvironmentPlate {
  public:
   /// width, height: the frames' size (the manifest's), which the plate must have. stop: set from
@@ -60,6 +62,7 @@ class EnvironmentPlate {
   [[nodiscard]] const std::string& problem() const { return m_problem; }
 
  private:
+  void start_povray();
   void finish(int exit_code);
   void fail(std::string reason);
 
@@ -69,6 +72,7 @@ class EnvironmentPlate {
   const std::atomic<bool>* m_stop;
   std::string m_inputs_hash;
   std::unique_ptr<ChildProcess> m_process;
+  int m_starts = 0;
   bool m_started = false;
   bool m_done = false;
   bool m_interrupted = false;

@@ -2,14 +2,19 @@
 // stopped. Renders through render_local are in local_render_test.cpp.
 #include "render/environment_plate.h"
 
+#include <fmt/core.h>
 #include <gtest/gtest.h>
 #include <atomic>
+#include <cstdlib>
 #include <fstream>
+#include <map>
+#include <string>
 
 #include "output/image_check.h"
 #include "render/povray_command.h"
 #include "render/process.h"
 #include "render/test_folder.h"
+#include "render/text_file.h"
 
 namespace raintrace::render {
 namespace {
@@ -103,6 +108,52 @@ TEST_F(PovrayEnvironmentPlate, StopEndsPovrayAndLeavesNoPlate) {
   EXPECT_EQ(plate.problem(), "interrupted");
   EXPECT_FALSE(std::filesystem::exists(dir / kPlateImage));
   EXPECT_FALSE(std::filesystem::exists(dir / kPlateSidecar));
+}
+
+/// PATH for this process while in scope: the plate's POV-Ray inherits it.
+class ScopedPath {
+ public:
+  explicit ScopedPath(const std::map<std::string, std::string>& env)
+      : m_old{std::getenv("PATH") != nullptr ? std::getenv("PATH") : ""} {
+    ::setenv("PATH", env.at("PATH").c_str(), 1);
+  }
+  ~ScopedPath() { ::setenv("PATH", m_old.c_str(), 1); }
+  ScopedPath(const ScopedPath&) = delete;
+  ScopedPath& operator=(const ScopedPath&) = delete;
+
+ private:
+  std::string m_old;
+};
+
+// On a loaded machine POV-Ray can give up before it reads plate.ini. Without a plate every
+// frame traces the whole environment, so it is started again, as the frames are.
+TEST_F(PovrayEnvironmentPlate, APovrayThatDidNotStartIsStartedAgain) {
+  const auto dir = testing::fresh_test_dir("plate_not_started");
+  testing::write_test_folder(dir / "out", {.frames = 1, .plate = true});
+  const ScopedPath path{testing::path_with(
+      testing::povray_that_does_not_start(dir, povgen::kPlateIni, kPovrayStartAttempts - 1))};
+  EnvironmentPlate plate{dir / "out", 64, 36};
+  plate.wait();
+  EXPECT_TRUE(plate.problem().empty()) << plate.problem();
+  EXPECT_TRUE(image_is_complete(dir / "out" / kPlateImage, 64, 36));
+  // Three starts that gave up, then the one that rendered the plate.
+  EXPECT_EQ(read_text(dir / "starts"), std::to_string(kPovrayStartAttempts) + "\n");
+}
+
+TEST_F(PovrayEnvironmentPlate, APovrayThatNeverStartsLeavesNoPlateAndSaysWhy) {
+  const auto dir = testing::fresh_test_dir("plate_never_started");
+  testing::write_test_folder(dir / "out", {.frames = 1, .plate = true});
+  const ScopedPath path{
+      testing::path_with(testing::povray_that_does_not_start(dir, povgen::kPlateIni, 1000))};
+  EnvironmentPlate plate{dir / "out", 64, 36};
+  plate.wait();
+  EXPECT_NE(plate.problem().find(fmt::format("POV-Ray did not start, {} times: {}",
+                                             kPovrayStartAttempts, kPovrayStartupTimeout)),
+            std::string::npos)
+      << plate.problem();
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / kPlateImage));
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / kPlateSidecar));
+  EXPECT_EQ(read_text(dir / "starts"), std::to_string(kPovrayStartAttempts) + "\n");
 }
 
 }  // namespace

@@ -66,11 +66,6 @@ class JobSource {
   [[nodiscard]] virtual bool exhausted() const = 0;
 };
 
-/// POV-Ray is started this many times in all on a span whose process ended because it did not
-/// start (povray_did_not_start: its worker thread missed a 3 s deadline on a loaded machine)
-/// before the span's first frame counts as failed.
-inline constexpr int kPovrayStartAttempts = 4;
-
 /// Renders every job; returns false when stopped by settings.stop (finished frames are promoted
 /// and reported first). A span whose process fails at frame f reports f and goes on with
 /// f+1..last in a new process — unless the folder's filesystem is full: then it throws

@@ -4,12 +4,14 @@
 
 #include <fmt/core.h>
 #include <unistd.h>
+#include <cstdlib>
 #include <fstream>
 
 #include "output/layout.h"
 #include "output/manifest.h"
 #include "output/test_dir.h"
 #include "povgen/content_hash.h"
+#include "render/povray_command.h"
 #include "render/process.h"
 #include "render/text_file.h"
 
@@ -145,5 +147,30 @@ std::filesystem::path fresh_test_dir(const std::string& name) {
 }
 
 bool system_has_povray() { return find_program("povray").has_value(); }
+
+std::filesystem::path povray_that_does_not_start(const std::filesystem::path& dir,
+                                                 const std::string& ini, int failures) {
+  const auto real_povray = find_program("povray");
+  EXPECT_TRUE(real_povray.has_value());
+  const auto bin = dir / "fake_bin";
+  std::filesystem::create_directories(bin);
+  const std::string starts = (dir / "starts").string();
+  std::ofstream{bin / "povray"} << fmt::format(
+      "#!/bin/sh\n"
+      "if [ \"$1\" = '{0}' ]; then\n"
+      "  n=$(( $(cat '{1}' 2>/dev/null || echo 0) + 1 )); echo $n > '{1}'\n"
+      "  if [ $n -le {2} ]; then echo '{3}' >&2; exit 1; fi\n"
+      "fi\n"
+      "exec '{4}' \"$@\"\n",
+      ini, starts, failures, kPovrayStartupTimeout, real_povray.value_or("povray").string());
+  std::filesystem::permissions(bin / "povray", std::filesystem::perms::owner_all,
+                               std::filesystem::perm_options::add);
+  return bin;
+}
+
+std::map<std::string, std::string> path_with(const std::filesystem::path& bin) {
+  const char* path = std::getenv("PATH");
+  return {{"PATH", bin.string() + ":" + (path != nullptr ? path : "/usr/bin:/bin")}};
+}
 
 }  // namespace raintrace::render::testing

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 #include <filesystem>
+#include <map>
 #include <string>
 
 namespace raintrace::render::testing {
@@ -41,6 +42,16 @@ class PovrayTest : public ::testing::Test {
     if (!system_has_povray()) GTEST_SKIP() << "POV-Ray not installed (apt-get install povray)";
   }
 };
+
+/// A folder dir/fake_bin holding a `povray` that, asked to render `ini` (its first argument),
+/// fails `failures` times the way POV-Ray 3.7 does when its worker thread misses its 3 s start-up
+/// deadline on a loaded machine (kPovrayStartupTimeout, exit code 1, no image), then hands over
+/// to the real POV-Ray. It counts the renders of `ini` it was asked for in dir/starts.
+std::filesystem::path povray_that_does_not_start(const std::filesystem::path& dir,
+                                                 const std::string& ini, int failures);
+
+/// PATH with `bin` ahead of the rest of it, as an environment for a child process.
+std::map<std::string, std::string> path_with(const std::filesystem::path& bin);
 
 /// A fresh empty folder under the system temp dir, named after the running test.
 std::filesystem::path fresh_test_dir(const std::string& name);

@@ -18,7 +18,6 @@
 #include "render/process.h"
 #include "render/test_folder.h"
 #include "tests/cli_test_support.h"
-#include "tests/support/command.h"
 
 namespace raintrace::render {
 namespace {
@@ -85,45 +84,15 @@ TEST_F(PovrayRenderCli, FailedFrameIsReportedWithCommandExitCodeAndPovrayErrorAn
   EXPECT_NE(r.output.find("4 frames rendered, 0 up to date, 1 failed"), std::string::npos);
 }
 
-/// A folder fake_bin holding a `povray` that, asked to render scene.ini, fails `failures` times
-/// the way POV-Ray 3.7 does when its worker thread misses its 3 s start-up deadline on a loaded
-/// machine (render/povray_command.h: kPovrayStartupTimeout, exit code 1, no image), then hands
-/// over to the real POV-Ray. It counts the renders it was asked for in dir/starts.
-std::filesystem::path povray_that_does_not_start(const std::filesystem::path& dir, int failures) {
-  const auto real = test_support::run_command("command -v povray");
-  EXPECT_EQ(real.exit_code, 0) << real.output;
-  const std::string real_povray = real.output.substr(0, real.output.find('\n'));
-  const auto bin = dir / "fake_bin";
-  std::filesystem::create_directories(bin);
-  const std::string starts = (dir / "starts").string();
-  std::ofstream{bin / "povray"} << fmt::format(
-      "#!/bin/sh\n"
-      "if [ \"$1\" = scene.ini ]; then\n"
-      "  n=$(( $(cat '{0}' 2>/dev/null || echo 0) + 1 )); echo $n > '{0}'\n"
-      "  if [ $n -le {1} ]; then echo '{2}' >&2; exit 1; fi\n"
-      "fi\n"
-      "exec '{3}' \"$@\"\n",
-      starts, failures, kPovrayStartupTimeout, real_povray);
-  std::filesystem::permissions(bin / "povray", std::filesystem::perms::owner_all,
-                               std::filesystem::perm_options::add);
-  return bin;
-}
-
-/// PATH with `bin` ahead of the rest of it.
-std::map<std::string, std::string> path_with(const std::filesystem::path& bin) {
-  const char* path = std::getenv("PATH");
-  return {{"PATH", bin.string() + ":" + (path != nullptr ? path : "/usr/bin:/bin")}};
-}
-
 // On a loaded machine POV-Ray sometimes gives up before reading anything (seen in CI: one frame
 // of a test failed, its log holding that one line). Nothing was traced, so raintrace starts it
 // again on the same frames instead of failing them.
 TEST_F(PovrayRenderCli, APovrayThatDidNotStartIsStartedAgainOnTheSameFrames) {
   const auto dir = testing::fresh_test_dir("cli_not_started");
   testing::write_test_folder(dir / "out", {.frames = 1});
-  const auto bin = povray_that_does_not_start(dir, kPovrayStartAttempts - 1);
-  const auto r =
-      run_raintrace({"render", (dir / "out").string(), "--no-movie"}, dir / "log", path_with(bin));
+  const auto bin = testing::povray_that_does_not_start(dir, "scene.ini", kPovrayStartAttempts - 1);
+  const auto r = run_raintrace({"render", (dir / "out").string(), "--no-movie"}, dir / "log",
+                               testing::path_with(bin));
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("1 frames rendered, 0 up to date, 0 failed"), std::string::npos)
       << r.output;
@@ -137,9 +106,9 @@ TEST_F(PovrayRenderCli, APovrayThatDidNotStartIsStartedAgainOnTheSameFrames) {
 TEST_F(PovrayRenderCli, APovrayThatNeverStartsFailsTheFrameAndSaysWhy) {
   const auto dir = testing::fresh_test_dir("cli_never_started");
   testing::write_test_folder(dir / "out", {.frames = 1});
-  const auto bin = povray_that_does_not_start(dir, 1000);
-  const auto r =
-      run_raintrace({"render", (dir / "out").string(), "--no-movie"}, dir / "log", path_with(bin));
+  const auto bin = testing::povray_that_does_not_start(dir, "scene.ini", 1000);
+  const auto r = run_raintrace({"render", (dir / "out").string(), "--no-movie"}, dir / "log",
+                               testing::path_with(bin));
   EXPECT_EQ(r.exit_code, 1) << r.output;  // cli/exit_codes.h: failed
   EXPECT_NE(r.output.find(fmt::format("POV-Ray did not start, {} times: {}", kPovrayStartAttempts,
                                       kPovrayStartupTimeout)),
