@@ -41,6 +41,7 @@ for name in "${examples[@]}"; do
   "$raintrace" render "$root/examples/$name.toml" -o "$folder" --frames "$frame" \
     --width 640 --height 360 --quality final --no-movie --force
   image=$(printf '%s/images/frame_%04d.png' "$folder" "$frame")
-  oiiotool "$image" --compression jpeg:85 -o "$out/$name.jpg"
+  # Without the command line oiiotool would record in the JPEG: it names this machine's paths.
+  oiiotool --nosoftwareattrib "$image" --compression jpeg:85 -o "$out/$name.jpg"
   echo "   $out/$name.jpg: $(( $(stat -c %s "$out/$name.jpg") / 1024 )) KB"
 done
