@@ -74,7 +74,6 @@ EnvironmentPlate::EnvironmentPlate(std::filesystem::path out_dir, int width, int
   std::filesystem::create_directories(m_out / temp_dir_name());
   prepare_povray_home(m_out);
   start_povray();
-  m_started = true;
 }
 
 void EnvironmentPlate::start_povray() {

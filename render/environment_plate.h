@@ -55,7 +55,7 @@ class EnvironmentPlate {
   void wait(const std::function<void()>& on_tick = {});
 
   /// True when this object started POV-Ray (the plate was missing or stale).
-  [[nodiscard]] bool started() const { return m_started; }
+  [[nodiscard]] bool started() const { return m_starts > 0; }
   [[nodiscard]] bool interrupted() const { return m_interrupted; }
   /// Empty unless finished without a plate: one line with POV-Ray's exit code, its own error
   /// lines (or why the image was rejected) and the log path; "interrupted" when stopped.
@@ -72,8 +72,7 @@ class EnvironmentPlate {
   const std::atomic<bool>* m_stop;
   std::string m_inputs_hash;
   std::unique_ptr<ChildProcess> m_process;
-  int m_starts = 0;
-  bool m_started = false;
+  int m_starts = 0;  ///< POV-Ray processes started on the plate
   bool m_done = false;
   bool m_interrupted = false;
   std::string m_problem;
