@@ -130,8 +130,7 @@ void EnvironmentPlate::finish(int exit_code) {
                     m_out.string(), kPlateLog));
     auto lines = povray_error_lines(log_text);
     if (did_not_start) {
-      lines.push_back(
-          fmt::format("POV-Ray did not start, {} times: {}", m_starts, kPovrayStartupTimeout));
+      lines.push_back(povray_did_not_start_line(m_starts));
     }
     std::string reason;
     for (const auto& line : lines) reason += (reason.empty() ? "" : " | ") + line;

@@ -69,6 +69,10 @@ bool povray_did_not_start(const std::string& log_text) {
   return log_text.find(kPovrayStartupTimeout) != std::string::npos;
 }
 
+std::string povray_did_not_start_line(int starts) {
+  return fmt::format("POV-Ray did not start, {} times: {}", starts, kPovrayStartupTimeout);
+}
+
 std::vector<std::string> povray_error_lines(const std::string& log_text) {
   std::vector<std::string> lines;
   std::istringstream in{log_text};

@@ -65,6 +65,9 @@ inline constexpr const char* kPovrayStartupTimeout = "Timed out waiting for work
 /// True when the log says POV-Ray did not start (kPovrayStartupTimeout).
 bool povray_did_not_start(const std::string& log_text);
 
+/// The line a failure report gives for work POV-Ray never started on, after `starts` starts.
+std::string povray_did_not_start_line(int starts);
+
 /// POV-Ray is started this many times in all on the same work (a span of frames, or the
 /// environment plate) whose process ended because it did not start, before that work counts as
 /// failed.

@@ -195,8 +195,7 @@ class Runner {
     failure.log = r.log;
     failure.error_lines = povray_error_lines(log_text);
     if (did_not_start) {
-      failure.error_lines.push_back(
-          fmt::format("POV-Ray did not start, {} times: {}", r.attempt, kPovrayStartupTimeout));
+      failure.error_lines.push_back(povray_did_not_start_line(r.attempt));
     }
     if (failure.error_lines.empty()) {
       std::string why;
