@@ -329,6 +329,9 @@ void write_sphere(Emitter& out, const glm::vec3& centre, float radius) {
 // Each group of segments twice: the channel itself (RT_BoltCore, widened to at least half a
 // pixel with its light scaled to match), and around it the light that rain and cloud scatter out
 // of it (RT_BoltGlow, scene.inc), a merge so that segments meeting at a joint do not glow twice.
+// Both macros' emission is per unit of surface, set for a trunk of kBoltLightTrunkRadius_m; a
+// bolt whose trunk is drawn thinner or thicker has both scaled by the inverse, so that it sends
+// the same light per metre of channel (before, halving trunk_radius_m halved the bolt's light).
 
 void write_bolts(Emitter& out, const std::vector<BoltValue>& bolts) {
   if (bolts.empty()) return;
@@ -336,11 +339,12 @@ void write_bolts(Emitter& out, const std::vector<BoltValue>& bolts) {
   out.text("#if(RT_Mask=0)\n");
   for (const BoltValue& bolt : bolts) {
     if (bolt.segments.empty()) continue;
+    const float light = bolt.brightness * (kBoltLightTrunkRadius_m / bolt.trunk_radius);
     out.text("union{\n");
     for (const CylinderValue& c : bolt.segments) {
       write_cylinder(out, c, c.core_radius);
       out.text(" RT_BoltCore(");
-      out.number(c.core_radius > 0.0f ? bolt.brightness * c.radius / c.core_radius : 0.0f);
+      out.number(c.core_radius > 0.0f ? light * c.radius / c.core_radius : 0.0f);
       out.text(")}\n");
     }
     out.text("no_shadow hollow\n}\nmerge{\n");
@@ -355,7 +359,7 @@ void write_bolts(Emitter& out, const std::vector<BoltValue>& bolts) {
       write_sphere(out, c.end, c.radius * kBoltGlowRadii * 1.001f);
     }
     out.text("RT_BoltGlow(");
-    out.number(bolt.brightness);
+    out.number(light);
     out.text(")\nno_shadow hollow\n}\n");
   }
   out.text("#end\n");

@@ -100,6 +100,24 @@ TEST(FrameText, FrameWithABoltSaysSoBeforeTheSceneInclude) {
   EXPECT_EQ(frame_text(values).find("RT_Bolts"), std::string::npos);
 }
 
+TEST(FrameText, ABoltDrawnHalfAsThickShinesTwiceAsBrightPerSurface) {
+  // RT_BoltCore's and RT_BoltGlow's emission is per unit of surface, set for a 0.6 m trunk: a
+  // channel drawn half as thick keeps its light per metre by emitting twice as much.
+  FrameValues values;
+  BoltValue bolt;
+  bolt.brightness = 0.5f;
+  bolt.segments.push_back({{0, 100, 200}, {5, 0, 200}, 0.3f, 0.3f});
+  bolt.trunk_radius = 0.3f;
+  values.bolts.push_back(bolt);
+  std::string text = frame_text(values);
+  EXPECT_NE(text.find("RT_BoltCore(1)"), std::string::npos) << text;
+  EXPECT_NE(text.find("RT_BoltGlow(1)"), std::string::npos) << text;
+  values.bolts.front().trunk_radius = kBoltLightTrunkRadius_m;  // the radius it is set for
+  text = frame_text(values);
+  EXPECT_NE(text.find("RT_BoltCore(0.5)"), std::string::npos) << text;
+  EXPECT_NE(text.find("RT_BoltGlow(0.5)"), std::string::npos) << text;
+}
+
 TEST(FrameText, OnlyUsedCellsGetUvQuadsInCellOrder) {
   // Cells 5 and 0 of the default atlas: uv_vectors only for those two, cell 0 first (uv
   // indices 0..3), cell 5 second (4..7).

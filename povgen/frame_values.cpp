@@ -304,6 +304,10 @@ void build_frame_values(const sim::Frame& frame, const ExportParams& look, Frame
     // One BoltValue per generation: the main channel carries every return stroke, the branches
     // only the first, fainter with each generation.
     const std::size_t first = values.bolts.size();
+    float trunk_radius = 0.0f;
+    for (const sim::BoltSegment& s : bolt.segments) {
+      if (s.generation == 0) trunk_radius = std::max(trunk_radius, s.radius);
+    }
     for (const sim::BoltSegment& s : bolt.segments) {
       if (!view.segment_visible(s.start, s.end, s.radius)) continue;
       const auto g = static_cast<std::size_t>(std::max(s.generation, 0));
@@ -318,6 +322,7 @@ void build_frame_values(const sim::Frame& frame, const ExportParams& look, Frame
                              : bolt.branch_brightness *
                                    static_cast<float>(sim::branch_brightness(static_cast<int>(g)));
       values.bolts[first + g].brightness = std::max(b, 0.0f);
+      if (trunk_radius > 0.0f) values.bolts[first + g].trunk_radius = trunk_radius;
     }
     values.bolts.erase(
         std::remove_if(values.bolts.begin() + static_cast<std::ptrdiff_t>(first),

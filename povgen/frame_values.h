@@ -38,11 +38,19 @@ struct CylinderValue {
   float core_radius;
 };
 
+/// The trunk radius that RT_BoltCore's emission (scene.inc) is set for: a trunk this thick at
+/// brightness 1 sends the camera a return stroke's light per metre of channel
+/// (scene_files.cpp, bolt_macros_text). A bolt drawn with any other trunk radius keeps that light
+/// per metre (frame_text.cpp), so `[lightning] trunk_radius_m` sets how wide it is drawn only.
+inline constexpr float kBoltLightTrunkRadius_m = 0.6f;
+
 /// The segments of one bolt that glow alike: its main channel, or its branches of one
 /// generation.
 struct BoltValue {
   std::vector<CylinderValue> segments;
   float brightness;  ///< ~0..1: 1 is the first return stroke's peak in the main channel
+  /// m: the radius of its bolt's trunk (generation 0), for every generation's group.
+  float trunk_radius = kBoltLightTrunkRadius_m;
 };
 
 struct FrameValues {

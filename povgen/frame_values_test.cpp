@@ -536,6 +536,21 @@ TEST(FrameValues, BoltBranchesFaintestLastAndNoThinnerThanHalfAPixel) {
   EXPECT_FLOAT_EQ(values.bolts[0].segments[0].radius, 0.6f);
 }
 
+TEST(FrameValues, EveryGroupOfABoltKnowsItsTrunksRadius) {
+  // frame_text sets the channel's light per metre by the trunk's radius, branches included.
+  sim::Frame frame;
+  sim::Bolt bolt;
+  bolt.brightness = 0.8f;
+  bolt.branch_brightness = 0.5f;
+  bolt.segments.push_back({{0.0f, 60.0f, 400.0f}, {1.0f, 0.0f, 400.0f}, 0.3f, 0});
+  bolt.segments.push_back({{0.0f, 50.0f, 400.0f}, {8.0f, 40.0f, 400.0f}, 0.15f, 1});
+  frame.bolts.push_back(bolt);
+  const FrameValues values = build_frame_values(frame, default_look());
+  ASSERT_EQ(values.bolts.size(), 2u);
+  EXPECT_FLOAT_EQ(values.bolts[0].trunk_radius, 0.3f);
+  EXPECT_FLOAT_EQ(values.bolts[1].trunk_radius, 0.3f);
+}
+
 /// Number of places where a and b differ (sizes, then every field of every element).
 std::size_t differences(const FrameValues& a, const FrameValues& b) {
   std::size_t n = (a.drops.size() != b.drops.size()) + (a.streaks.size() != b.streaks.size());

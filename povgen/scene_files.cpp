@@ -134,7 +134,9 @@ std::string environment_with_plate_text(const ExportParams& look, const std::str
 // a white line that lit nothing; at 600·B, 1.4 times everything else (BENCHMARKS.md), its glare
 // (the camera's bloom) glows around it and the wet road mirrors it. Both blind viewers chose it
 // (4/10 against 3/10 each): "the bolt lights up the fog around it and is faintly reflected in
-// the wet road". The estimate would allow brighter still.
+// the wet road". The estimate would allow brighter still. 600 is per unit of a 0.6 m trunk's
+// surface (kBoltLightTrunkRadius_m, frame_values.h): frames scale B for any other trunk radius so
+// that the light per metre stays.
 std::string bolt_macros_text() {
   return "#macro RT_BoltCore(B)\n"
          " texture{pigment{rgb<0.86,0.9,1>} finish{ambient 0 diffuse 0 emission 600*B}}\n#end\n"
