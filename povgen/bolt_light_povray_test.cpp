@@ -17,9 +17,6 @@ namespace raintrace::povgen {
 namespace {
 
 namespace fs = std::filesystem;
-using testing::log_of;
-using testing::read_rgb;
-using testing::run_povray;
 
 /// The light of a straight trunk of `radius` alone under a black sky: Σ of the green channel of
 /// a 200×150 render without antialiasing. The trunk stands 105 m ahead, seen through 10°, where
@@ -47,11 +44,12 @@ double bolt_light(const std::string& name, float radius) {
   bolt.segments.push_back({{-1.0f, 21.6f, 100.0f}, {1.0f, -18.4f, 100.0f}, radius, 0});
   frame.bolts.push_back(bolt);
   write_file_atomic(dir / "frames" / "frame_0001.pov", frame_text(build_frame_values(frame, look)));
-  EXPECT_EQ(run_povray(dir, "frames/frame_0001.pov +W200 +H150 +FE -A +L. +WT1 +Oimages/bolt.exr"),
+  EXPECT_EQ(testing::run_povray(
+                dir, "frames/frame_0001.pov +W200 +H150 +FE -A +L. +WT1 +Oimages/bolt.exr"),
             0)
       << name << "\n"
-      << log_of(dir);
-  const std::vector<float> rgb = read_rgb(dir / "images" / "bolt.exr");
+      << testing::log_of(dir);
+  const std::vector<float> rgb = testing::read_rgb(dir / "images" / "bolt.exr");
   EXPECT_EQ(rgb.size(), 200u * 150u * 3u) << name;
   double sum = 0.0;
   for (std::size_t i = 1; i < rgb.size(); i += 3) sum += rgb[i];
