@@ -304,11 +304,9 @@ void build_frame_values(const sim::Frame& frame, const ExportParams& look, Frame
     // One BoltValue per generation: the main channel carries every return stroke, the branches
     // only the first, fainter with each generation.
     const std::size_t first = values.bolts.size();
-    float trunk_radius = 0.0f;
+    float trunk_radius = 0.0f;  // seen or not, it sets every group's light per metre
     for (const sim::BoltSegment& s : bolt.segments) {
       if (s.generation == 0) trunk_radius = std::max(trunk_radius, s.radius);
-    }
-    for (const sim::BoltSegment& s : bolt.segments) {
       if (!view.segment_visible(s.start, s.end, s.radius)) continue;
       const auto g = static_cast<std::size_t>(std::max(s.generation, 0));
       if (values.bolts.size() < first + g + 1)
