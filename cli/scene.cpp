@@ -114,10 +114,10 @@ std::string_view camera_key(const TableReader& r) {
 
 void check_camera(const TableReader& r, const sim::Camera& camera) {
   if (!sim::has_view_direction(camera)) {
-    r.fail(
-        camera_key(r),
-        fmt::format("must differ from camera.position and camera.look_at (both are [{}, {}, {}])",
-                    camera.position.x, camera.position.y, camera.position.z));
+    const std::string_view key = camera_key(r);
+    r.fail(key, fmt::format("must differ from camera.{} (both are [{}, {}, {}])",
+                            key == "look_at" ? "position" : "look_at", camera.position.x,
+                            camera.position.y, camera.position.z));
   }
   // POV-Ray's camera keeps +y up (sky); looking straight up or down leaves it no right vector.
   if (sim::looks_straight_up_or_down(camera)) {

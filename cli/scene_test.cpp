@@ -348,8 +348,9 @@ TEST(SceneErrors, CrossFieldRules) {
   EXPECT_EQ(error_of("[rain]\nnear_m = 2\nfar_m = 2\n"),
             "t.toml:3:9: rain.far_m: rain.far_m must be > rain.near_m, got 2 <= 2");
   EXPECT_EQ(error_of("[camera]\nposition = [0, 1.6, 0]\n"),
-            "t.toml:2:12: camera.position: must differ from camera.position and camera.look_at "
-            "(both are [0, 1.6, 0])");
+            "t.toml:2:12: camera.position: must differ from camera.look_at (both are [0, 1.6, 0])");
+  EXPECT_EQ(error_of("[camera]\nposition = [0, 1, 0]\nlook_at = [0, 1, 0]\n"),
+            "t.toml:3:11: camera.look_at: must differ from camera.position (both are [0, 1, 0])");
   EXPECT_EQ(error_of("[camera]\nlook_at = [0, 10, -5]\n"),
             "t.toml:2:11: camera.look_at: must not lie straight above or below camera.position "
             "(the camera keeps +y up)");
