@@ -92,5 +92,40 @@ TEST(PovRayFogMedia, ALampsLitAirIsTheConvergedMediumsSoftCone) {
   fs::remove_all(dir);
 }
 
+// The medium lights up as single scattering says. A parallel light straight down, of colour 1 in
+// POV-Ray's units (a white diffuse patch facing it shows 1: its irradiance is π), crosses a thin
+// isotropic mist; the camera looks level through the 10 m of it. Physics adds σs·E·p per metre,
+// p = 1/4π for an isotropic phase function: σs/4 here, 0.7 × 0.002 / 4 × 10 m = 0.0035, less the
+// 1 % the mist itself takes on the way. POV-Ray adds Sc·P·C per metre, its phase function P
+// integrating to 4π and its light colour C being E/π, so scene.inc must write Sc = σs/4 (with
+// `extinction 4`, so that the medium still takes σs). It wrote σs, and the mist of every media
+// fog shone four times as brightly as the lamps light it: 0.0139 here.
+TEST(PovRayFogMedia, AMistLitFromAboveShinesAsSingleScatteringSays) {
+  SKIP_WITHOUT_POVRAY();
+  const fs::path dir = testing::scratch_folder("fog_media_single_scattering_test");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  write_file_atomic(dir / "environment_source.inc",
+                    "background { rgb 0 }\n"
+                    "light_source { <0, 1000, 0> color rgb 1 parallel point_at <0, 0, 0> }\n");
+  ExportParams look;
+  look.width = 32;
+  look.height = 18;
+  look.environment.include_path = "environment_source.inc";
+  look.rain_medium = false;
+  look.fog.mode = FogMode::media;
+  look.fog.density_per_m = 0.002;
+  look.fog.depth_m = 10.0;  // the sphere of mist around the camera: 10 m along every ray
+  look.fog.colour = {1.0, 1.0, 1.0};
+  write_shared_files(dir, look, 1, dir, {1, 1});
+  const std::vector<float> rgb = testing::trace_linear(
+      dir, "lit_mist", "#declare RT_Flash=0;\n#include \"scene.inc\"\n", "+W32 +H18 -A +L. +WT1");
+  ASSERT_EQ(rgb.size(), 32u * 18u * 3u);
+  const double centre = rgb[3 * (9 * 32 + 16) + 1];
+  const double scattered = 0.7 * 0.002 / 4.0 * 10.0 * std::exp(-0.002 * 10.0 / 2.0);
+  EXPECT_NEAR(centre, scattered, 0.03 * scattered);
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace raintrace::povgen

@@ -32,18 +32,22 @@ std::string fog_text(const FogParams& fog, const sim::Camera& camera) {
   // Media mist: a hollow sphere of radius depth_m around the camera (the camera must be inside
   // a hollow container or media silently does nothing). Extinction = scattering + absorption =
   // density; 70 % of it scatters light from the environment's lights (streetlight cones),
-  // 30 % absorbs (Lambert-Beer). Eight evenly spaced samples (method 2) without jitter, which
-  // keeps renders repeatable: method 3's three adaptive samples cost as much and drew each
-  // lamp's lit air as a column with a hard vertical edge (heavy_fog, frame 16: mean error 0.057
-  // against 32 samples, 0.0007 for these; BENCHMARKS.md). The container's surface has no
-  // diffuse and no ambient: POV-Ray then skips its light loop.
+  // 30 % absorbs (Lambert-Beer). The scattering is written as a quarter with `extinction 4`:
+  // POV-Ray adds Sc·P·C per metre for a light of colour C, its phase function P integrating to
+  // 4π and C standing for E/π, where physics adds σs·E·P/4π = σs/4·C·P (rain_look.h does the
+  // same). Written whole, the mist shone four times as brightly as the lamps light it. Eight evenly
+  // spaced samples (method 2) without jitter, which keeps renders repeatable: method 3's three
+  // adaptive samples cost as much and drew each lamp's lit air as a column with a hard vertical
+  // edge (heavy_fog, frame 16: mean error 0.057 against 32 samples, 0.0007 for these;
+  // BENCHMARKS.md). The container's surface has no diffuse and no ambient: POV-Ray then skips its
+  // light loop.
   const double scattering = 0.7 * fog.density_per_m;
   const double absorption = 0.3 * fog.density_per_m;
   text += "sphere{" + format_vector(camera.position) + "," + format_number(fog.depth_m) +
           " hollow\n texture{pigment{rgbt 1} finish{ambient 0 diffuse 0}}\n"
           " interior{media{method 2 intervals 1 samples 8,8"
           " jitter 0\n  scattering{1,rgb " +
-          format_number(scattering) + "*" + colour + " extinction 1}\n  absorption rgb " +
+          format_number(scattering / 4.0) + "*" + colour + " extinction 4}\n  absorption rgb " +
           format_number(absorption) + "\n  emission RT_Flash*" +
           format_number(0.05 * fog.density_per_m) + "*" + colour + "}}\n no_shadow}\n";
   return text;

@@ -202,10 +202,11 @@ TEST(SceneFiles, FogModes) {
   EXPECT_LT(ground.find("#declare RT_GroundFogDepth=4;"), environment);
   look.fog.mode = FogMode::media;
   const std::string media = scene_inc_text(look);
-  // Hollow container of radius depth around the camera; scattering 0.7·0.05, absorption 0.3·0.05.
+  // Hollow container of radius depth around the camera; scattering 0.7·0.05 (written as a quarter
+  // of it, taking four times that: POV-Ray's units), absorption 0.3·0.05.
   EXPECT_TRUE(contains(media, "sphere{<0,1.6,-5>,4 hollow"));
-  EXPECT_TRUE(contains(media, "scattering{1,rgb 0.035*"));
-  EXPECT_TRUE(contains(media, "absorption rgb 0.015"));
+  EXPECT_TRUE(contains(media, "scattering{1,rgb 0.00875*"));
+  EXPECT_TRUE(contains(media, " extinction 4}\n  absorption rgb 0.015"));
   EXPECT_TRUE(contains(media, "jitter 0"));
   // Media mist scatters the lamps' light itself: the environment's painted lamp haze is off,
   // declared before the environment reads it.
