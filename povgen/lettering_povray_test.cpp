@@ -17,7 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int kSize = 400;
+constexpr int kLetteringPixels = 400;
 
 // An orthographic camera 4 m across looking at the middle of a lit word, `degrees` off the
 // normal of the facade it stands on, toward the street's length, as a camera down the street
@@ -49,13 +49,13 @@ std::string lettering_scene(double degrees, bool word = true) {
 TEST(PovRayLettering, ALitLetterGlowsThroughItsFaceNotItsSides) {
   SKIP_WITHOUT_POVRAY();
   const fs::path dir = testing::folder_with_street("povray_test_lettering");
-  const std::string options = testing::square_size(kSize) + " +A0.01 +AM2 +R3";
+  const std::string options = testing::square_size(kLetteringPixels) + " +A0.01 +AM2 +R3";
   const auto head_on = testing::trace_linear(dir, "head_on", lettering_scene(0), options);
   const auto oblique = testing::trace_linear(dir, "oblique", lettering_scene(80), options);
   const auto sky = testing::trace_linear(dir, "sky", lettering_scene(0, false), options);
   const auto sky_oblique =
       testing::trace_linear(dir, "sky_oblique", lettering_scene(80, false), options);
-  ASSERT_EQ(head_on.size(), 3u * kSize * kSize);
+  ASSERT_EQ(head_on.size(), 3u * kLetteringPixels * kLetteringPixels);
   ASSERT_EQ(oblique.size(), head_on.size());
   ASSERT_EQ(sky.size(), head_on.size());
   ASSERT_EQ(sky_oblique.size(), head_on.size());
