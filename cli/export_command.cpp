@@ -41,6 +41,9 @@ int run_export(const ExportArgs& args) {
   output::ClaimNote note;
   auto folder = claim_folder(args.out, scene, to_export, args.force, &note);
   if (!note.text.empty()) fmt::print(stderr, "export: {}\n", note.text);
+  if (const auto edits = hand_edit_note(folder, true); !edits.empty()) {
+    fmt::print(stderr, "export: {}\n", edits);
+  }
   const bool terminal = isatty(fileno(stderr)) != 0;
   fmt::print(stderr, "export: {} frames {}-{} of {} to {}\n", args.scene, range.first, range.last,
              scene.frames, args.out);

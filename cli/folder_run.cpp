@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 #include <unistd.h>
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <stdexcept>
 #include <vector>
 
@@ -30,6 +31,28 @@ output::FolderState claim_folder(const std::filesystem::path& out, const Scene& 
                                  force, this_command(), note);
   folder.set_develop({scene.develop, scene.look.camera.fov_deg, scene.look.aperture_m});
   return folder;
+}
+
+std::string hand_edit_note(const output::FolderState& folder, bool exporting) {
+  const auto edited = exporting ? folder.hand_edited_inputs() : folder.newly_edited_inputs();
+  if (edited.empty()) return "";
+  constexpr std::size_t kNamed = 3;
+  std::string files;
+  for (std::size_t i = 0; i < std::min(edited.size(), kNamed); ++i) {
+    files += (i == 0 ? "" : ", ") + edited[i];
+  }
+  if (edited.size() > kNamed) files += fmt::format(" and {} more", edited.size() - kNamed);
+  const bool one = edited.size() == 1;
+  if (exporting) {
+    return fmt::format(
+        "{} in {} {} edited by hand: this export writes the scene's own files over the edits "
+        "(to render the edits instead, render the folder: raintrace render {})",
+        files, folder.dir().string(), one ? "was" : "were", folder.dir().string());
+  }
+  return fmt::format(
+      "{} edited in {} since raintrace saw {}: the frames that read {} are "
+      "rendered again",
+      files, folder.dir().string(), one ? "it" : "them", one ? "it" : "them");
 }
 
 void add_limit_options(CLI::App& command, LimitArgs& limits) {

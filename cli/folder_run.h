@@ -38,6 +38,11 @@ output::FolderState claim_folder(const std::filesystem::path& out, const Scene& 
                                  const output::SceneToExport& to_export, bool force,
                                  output::ClaimNote* note);
 
+/// One line for the user when files POV-Ray reads were edited in the folder since raintrace
+/// wrote them (FolderState::edited_inputs); empty when none were. `exporting`: this run writes
+/// the scene's own files over them.
+std::string hand_edit_note(const output::FolderState& folder, bool exporting);
+
 /// This process's command line, shell-quoted ("raintrace render a.toml -o out"), for the lock
 /// record that tells a second run who holds the folder.
 std::string this_command();

@@ -241,6 +241,9 @@ RenderInput prepare(const RenderArgs& args, int povray_processes) {
           "folder");
     }
     in.folder.emplace(output::FolderState::open(input, this_command()));
+    if (const auto edits = hand_edit_note(*in.folder, false); !edits.empty()) {
+      fmt::print(stderr, "render: {}\n", edits);
+    }
     const auto& manifest = in.folder->manifest();
     if (args.mask && !manifest.identity.masks) {
       throw std::invalid_argument(
@@ -271,6 +274,9 @@ RenderInput prepare(const RenderArgs& args, int povray_processes) {
   output::ClaimNote note;
   in.folder.emplace(claim_folder(args.out, scene, *in.scene, args.force, &note));
   if (!note.text.empty()) fmt::print(stderr, "render: {}\n", note.text);
+  if (const auto edits = hand_edit_note(*in.folder, true); !edits.empty()) {
+    fmt::print(stderr, "render: {}\n", edits);
+  }
   return in;
 }
 

@@ -3,6 +3,7 @@
 
 #include <fmt/core.h>
 #include <algorithm>
+#include <map>
 #include <system_error>
 #include <utility>
 
@@ -14,6 +15,19 @@ namespace raintrace::output {
 namespace {
 
 namespace fs = std::filesystem;
+
+// What every frame's render reads besides its own .pov files (povgen::write_shared_files);
+// the ground's include and mask with puddles only.
+constexpr const char* kSharedInputs[] = {"scene.ini",
+                                         "scene.pov",
+                                         "scene.inc",
+                                         "environment.inc",
+                                         "raintrace_materials.inc",
+                                         "raintrace_ground.inc",
+                                         "textures/streak_atlas.png",
+                                         "textures/puddle_mask.png",
+                                         "mask.ini",
+                                         "mask.pov"};
 
 std::string short_hash(const std::string& hash) {
   return hash.empty() ? std::string{"none"} : hash.substr(0, 8) + "…";
@@ -239,6 +253,7 @@ FolderState FolderState::claim(const fs::path& dir, const FolderIdentity& identi
   if (old.identity == identity) {
     FolderState state{std::move(lock), dir, std::move(old)};
     state.adopt_unhashed_pictures();
+    state.notice_hand_edits();
     state.adopt_rendered_by_hand();
     return state;
   }
@@ -289,6 +304,7 @@ FolderState FolderState::open(const fs::path& dir, const std::string& command) {
   }
   FolderState state{std::move(lock), dir, std::move(m)};
   state.adopt_unhashed_pictures();
+  state.notice_hand_edits();
   state.adopt_rendered_by_hand();
   return state;
 }
@@ -315,28 +331,85 @@ void FolderState::adopt_unhashed_pictures() {
   if (changed) save();
 }
 
+void FolderState::notice_hand_edits() {
+  // A shared file edited changes every frame's inputs, a frame's own text only that frame's.
+  // Each input hash it changes is chained with the edit (the file and its new bytes' hash), so
+  // a picture rendered before counts as "inputs changed"; and so is the shared hash, so the
+  // next export, which writes raintrace's own files back, finds them changed and every frame
+  // is exported again.
+  std::string shared_edits;
+  std::map<int, std::string> frame_edits;
+  bool changed = false;
+  for (InputFileRecord& r : m_manifest.input_files) {
+    const InputFileCheck check = check_input_file(m_dir, r);
+    changed = changed || check == InputFileCheck::touched || check == InputFileCheck::edited;
+    if (check != InputFileCheck::edited) continue;
+    m_edited_inputs.push_back(r.path);
+    const std::string edit = r.path + '\0' + r.hash + '\0';
+    const auto reader =
+        std::find_if(m_manifest.frames.begin(), m_manifest.frames.end(), [&](const FrameEntry& f) {
+          return f.image.scene == r.path || (f.mask && f.mask->scene == r.path);
+        });
+    if (reader != m_manifest.frames.end()) {
+      frame_edits[reader->number] += edit;
+    } else {
+      shared_edits += edit;
+    }
+  }
+  const auto chain = [](std::string& hash, const std::string& edits) {
+    if (!hash.empty() && !edits.empty()) hash = povgen::content_hash(hash + '\0' + edits);
+  };
+  chain(m_manifest.shared_hash, shared_edits);
+  for (FrameEntry& f : m_manifest.frames) {
+    chain(f.input_hash, shared_edits);
+    const auto own = frame_edits.find(f.number);
+    if (own != frame_edits.end()) chain(f.input_hash, own->second);
+  }
+  if (changed) save();
+}
+
+std::vector<std::string> FolderState::hand_edited_inputs() const {
+  std::vector<std::string> paths;
+  for (const InputFileRecord& r : m_manifest.input_files) {
+    if (r.by_hand) paths.push_back(r.path);
+  }
+  return paths;
+}
+
+void FolderState::record_inputs(const std::vector<std::string>& paths) {
+  auto& records = m_manifest.input_files;
+  for (const std::string& path : paths) {
+    const auto it = std::find_if(records.begin(), records.end(),
+                                 [&](const InputFileRecord& r) { return r.path == path; });
+    auto now = record_input_file(m_dir, path);
+    if (it == records.end()) {
+      if (now) records.push_back(std::move(*now));
+    } else if (now) {
+      *it = std::move(*now);
+    } else {
+      records.erase(it);
+    }
+  }
+}
+
 void FolderState::adopt_rendered_by_hand() {
-  // What every frame's render reads besides its own .pov files (povgen::write_shared_files).
-  constexpr const char* kShared[] = {"scene.ini",
-                                     "scene.pov",
-                                     "scene.inc",
-                                     "environment.inc",
-                                     "raintrace_materials.inc",
-                                     "textures/streak_atlas.png",
-                                     "mask.ini",
-                                     "mask.pov"};
   const auto mtime = [this](const std::string& relative) {
     std::error_code error;
     const auto t = fs::last_write_time(m_dir / relative, error);
     return error ? fs::file_time_type::min() : t;
   };
   auto inputs = fs::file_time_type::min();
-  for (const char* name : kShared) inputs = std::max(inputs, mtime(name));
+  for (const char* name : kSharedInputs) inputs = std::max(inputs, mtime(name));
   bool changed = false;
   for (FrameEntry& f : m_manifest.frames) {
     if (f.input_hash.empty()) continue;
     for (PictureRecord* p : {&f.image, f.mask ? &*f.mask : nullptr}) {
-      if (p == nullptr || p->status == FrameStatus::rendered) continue;
+      // Rendered from the current inputs: nothing to adopt. A picture rendered before an edit
+      // (notice_hand_edits) is adopted if POV-Ray made it again since.
+      if (p == nullptr ||
+          (p->status == FrameStatus::rendered && p->rendered_hash == f.input_hash)) {
+        continue;
+      }
       std::error_code error;
       const auto written = fs::last_write_time(m_dir / p->path, error);
       if (error) continue;
@@ -383,6 +456,13 @@ void FolderState::begin_export(const std::string& shared_hash, FrameSpan range, 
                                    [&](const FrameEntry& f) { return f.number > frame_count; });
   for (auto it = beyond; it != frames.end(); ++it) remove_frame_files(m_dir, *it);
   frames.erase(beyond, frames.end());
+  std::erase_if(m_manifest.input_files, [&](const InputFileRecord& r) {
+    return r.path.starts_with(std::string{kFramesDir} + "/") &&
+           std::none_of(frames.begin(), frames.end(), [&](const FrameEntry& f) {
+             return f.image.scene == r.path || (f.mask && f.mask->scene == r.path);
+           });
+  });
+  record_inputs({std::begin(kSharedInputs), std::end(kSharedInputs)});
   const bool shared_changed =
       !m_manifest.shared_hash.empty() && m_manifest.shared_hash != shared_hash;
   m_manifest.raintrace_version = RAINTRACE_VERSION;
@@ -410,6 +490,9 @@ void FolderState::frame_exported(int number, const std::string& input_hash) {
   FrameEntry* f = find_mutable(number);
   if (f == nullptr) return;  // not in this export's range: nothing vouches for it
   f->input_hash = input_hash;
+  std::vector<std::string> files{f->image.scene};
+  if (f->mask) files.push_back(f->mask->scene);
+  record_inputs(files);
   for (PictureRecord* p : {&f->image, f->mask ? &*f->mask : nullptr}) {
     if (p != nullptr && p->status == FrameStatus::rendered && p->rendered_hash != input_hash) {
       p->status = FrameStatus::exported;  // rendered_hash stays: "inputs changed"

@@ -133,6 +133,10 @@ class FolderState {
   /// newer than every file POV-Ray read for it (the frame's .pov files and the shared files:
   /// make's rule). Its PNG is then developed like any other.
   ///
+  /// Before that, both notice the files POV-Ray reads that were edited since raintrace wrote
+  /// them (input_files.h: a shared include, a frame's text): the frames that read such a file
+  /// count as "inputs changed", and edited_inputs() names the files for the user.
+  ///
   /// For a run that renders an already exported folder: takes the lock (FolderBusy) and reads
   /// the manifest. Throws FolderRefused when dir holds no raintrace manifest, or one of an older
   /// folder format.
@@ -205,6 +209,14 @@ class FolderState {
   [[nodiscard]] int digits() const;
   /// The frame's entry; nullptr when the manifest has none.
   [[nodiscard]] const FrameEntry* find(int number) const;
+  /// Files POV-Ray reads that were edited since the last run saw them, found when this run
+  /// claimed or opened the folder ("environment.inc", "frames/frame_0003.pov").
+  [[nodiscard]] const std::vector<std::string>& newly_edited_inputs() const {
+    return m_edited_inputs;
+  }
+  /// Files POV-Ray reads that are not as raintrace wrote them: edited by hand in this run's
+  /// sight or an earlier one's (an export writes the scene's own over those it exports).
+  [[nodiscard]] std::vector<std::string> hand_edited_inputs() const;
 
  private:
   FolderState(FolderLock lock, std::filesystem::path dir, Manifest manifest);
@@ -212,12 +224,16 @@ class FolderState {
   PictureRecord* picture(Pass pass, int number);
   void adopt_unhashed_pictures();
   void adopt_rendered_by_hand();
+  void notice_hand_edits();
+  /// Records these files' size, time and hash as they are now (input_files.h).
+  void record_inputs(const std::vector<std::string>& paths);
   DevelopReason decide_develop(int number, RenderReason image) const;
 
   FolderLock m_lock;
   std::filesystem::path m_dir;
   Manifest m_manifest;
   std::string m_develop_hash;
+  std::vector<std::string> m_edited_inputs;
 };
 
 /// The develop hash: the settings and field of view of `spec`, the seed, and `response` (the

@@ -4,9 +4,13 @@
 #include "output/folder_state.h"
 
 #include <gtest/gtest.h>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
 
 #include "output/test_dir.h"
 
@@ -252,6 +256,85 @@ TEST(UpToDateRule, ChangedSharedFilesLeaveTheFramesOutsideTheRangeUnexported) {
   EXPECT_EQ(plan.images, (std::vector<int>{1, 2}));
   EXPECT_NE(plan.summary().find("2 not exported"), std::string::npos) << plan.summary();
   EXPECT_TRUE(folder.verified_frames().empty());
+}
+
+// An export as export_frames does it, with the shared files written first.
+void export_with_shared_files(FolderState& folder, int frames) {
+  write(folder.dir() / "environment.inc", "#declare Lamp = 1;\n");
+  write(folder.dir() / "scene.inc", "// scene\n");
+  export_and_render(folder, frames);
+}
+
+TEST(HandEdits, AnEditedSharedFileChangesEveryFramesInputsATouchNone) {
+  const auto dir = testing::fresh_test_dir("hand_edit_shared");
+  {
+    auto folder = FolderState::claim(dir, identity(), false, "test");
+    export_with_shared_files(folder, 3);
+  }
+  // Touched only: the same bytes, a later time.
+  fs::last_write_time(dir / "scene.inc",
+                      fs::last_write_time(dir / "scene.inc") + std::chrono::seconds(5));
+  {
+    auto folder = FolderState::open(dir, "test");
+    EXPECT_TRUE(folder.newly_edited_inputs().empty());
+    EXPECT_TRUE(folder.plan({}).images.empty());
+  }
+  write(dir / "environment.inc", "#declare Lamp = 2;\n");  // the same size, other bytes
+  auto folder = FolderState::open(dir, "test");
+  EXPECT_EQ(folder.newly_edited_inputs(), std::vector<std::string>{"environment.inc"});
+  for (int n = 1; n <= 3; ++n)
+    EXPECT_EQ(folder.decide(Pass::image, n, false), RenderReason::inputs_changed) << n;
+  // Rendered again from the edited file, the frames are up to date, also for the next run.
+  for (int n = 1; n <= 3; ++n) folder.rendered(Pass::image, n, 0.5);
+  EXPECT_EQ(folder.plan({}).images, std::vector<int>{});
+  { FolderState moved = std::move(folder); }
+  auto next = FolderState::open(dir, "test");
+  EXPECT_TRUE(next.newly_edited_inputs().empty());
+  EXPECT_EQ(next.hand_edited_inputs(), std::vector<std::string>{"environment.inc"});
+  EXPECT_TRUE(next.plan({}).images.empty());
+  // An export writes raintrace's own file back (the shared hash as first exported): the frames
+  // it does not export are no longer exported, those it does are rendered again.
+  write(dir / "environment.inc", "#declare Lamp = 1;\n");
+  next.begin_export("shared", {1, 1}, 3);
+  next.frame_exported(1, "shared+1");
+  EXPECT_TRUE(next.hand_edited_inputs().empty());
+  EXPECT_EQ(next.decide(Pass::image, 1, false), RenderReason::inputs_changed);
+  EXPECT_EQ(next.decide(Pass::image, 2, false), RenderReason::not_exported);
+}
+
+TEST(HandEdits, AnEditedFrameChangesThatFramesInputsOnly) {
+  const auto dir = testing::fresh_test_dir("hand_edit_frame");
+  {
+    auto folder = FolderState::claim(dir, identity(), false, "test");
+    export_with_shared_files(folder, 3);
+  }
+  write(dir / frame_scene_name(Pass::image, 2), "frame 2, the light moved by hand");
+  auto folder = FolderState::claim(dir, identity(), false, "test");  // a resumed run, too
+  EXPECT_EQ(folder.newly_edited_inputs(),
+            std::vector<std::string>{frame_scene_name(Pass::image, 2)});
+  EXPECT_EQ(folder.decide(Pass::image, 1, false), RenderReason::up_to_date);
+  EXPECT_EQ(folder.decide(Pass::image, 2, false), RenderReason::inputs_changed);
+  EXPECT_EQ(folder.decide(Pass::image, 3, false), RenderReason::up_to_date);
+}
+
+TEST(HandEdits, APictureRenderedByHandSinceTheEditIsAdoptedTheOthersRenderedAgain) {
+  const auto dir = testing::fresh_test_dir("hand_edit_adopt");
+  {
+    auto folder = FolderState::claim(dir, identity(), false, "test");
+    export_with_shared_files(folder, 2);
+  }
+  write(dir / "environment.inc", "#declare Lamp = 3; // brighter\n");
+  // `povray scene.ini +SF2 +EF2` by hand after the edit: a whole image of the frame's size,
+  // newer than every input.
+  const auto image = dir / final_image_name(Pass::image, 2);
+  OIIO::ImageBuf picture{OIIO::ImageSpec{64, 36, 3, OIIO::TypeDesc::HALF}};
+  OIIO::ImageBufAlgo::fill(picture, {0.5f, 0.25f, 0.125f});
+  ASSERT_TRUE(picture.write(image.string()));
+  fs::last_write_time(image,
+                      fs::last_write_time(dir / "environment.inc") + std::chrono::seconds(1));
+  auto folder = FolderState::open(dir, "test");
+  EXPECT_EQ(folder.decide(Pass::image, 1, false), RenderReason::inputs_changed);
+  EXPECT_EQ(folder.decide(Pass::image, 2, false), RenderReason::up_to_date);
 }
 
 TEST(DevelopRule, APngIsCurrentOnlyForItsExrTheRunsDevelopHashAndItsRecordedBytes) {

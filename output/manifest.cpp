@@ -202,6 +202,14 @@ std::optional<FrameStatus> parse_frame_status(std::string_view text) {
 std::string to_json(const Manifest& m) {
   json frames = json::array();
   for (const FrameEntry& f : m.frames) frames.push_back(frame_to_json(f));
+  json inputs = json::array();
+  for (const InputFileRecord& r : m.input_files) {
+    inputs.push_back({{"path", r.path},
+                      {"size", r.size},
+                      {"mtime_ns", r.mtime_ns},
+                      {"hash", r.hash},
+                      {"edited_by_hand", r.by_hand}});
+  }
   const FolderIdentity& id = m.identity;
   const json doc{{"raintrace_version", m.raintrace_version},
                  {"folder_format", m.format},
@@ -217,7 +225,8 @@ std::string to_json(const Manifest& m) {
                  {"frame_count", m.frame_count},
                  {"movie_source", m.movie_source},
                  {"contact_sheet_source", m.contact_sheet_source},
-                 {"frames", frames}};
+                 {"frames", frames},
+                 {"input_files", inputs}};
   return doc.dump(2) + "\n";
 }
 
@@ -258,6 +267,17 @@ Manifest manifest_from_json(const std::string& text) {
   if (frames != doc.end()) {
     if (!frames->is_array()) throw std::runtime_error("'frames' must be an array");
     for (const json& f : *frames) m.frames.push_back(frame_from_json(f));
+  }
+  const auto inputs = doc.find("input_files");
+  if (inputs != doc.end() && !inputs->is_null()) {
+    if (!inputs->is_array()) throw std::runtime_error("'input_files' must be an array");
+    for (const json& r : *inputs) {
+      if (!r.is_object()) throw std::runtime_error("each input file must be an object");
+      m.input_files.push_back(
+          {field<std::string>(r, "path", ""), field<std::uint64_t>(r, "size", 0),
+           field<std::int64_t>(r, "mtime_ns", 0), field<std::string>(r, "hash", ""),
+           field<bool>(r, "edited_by_hand", false)});
+    }
   }
   return m;
 }

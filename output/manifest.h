@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "film/develop.h"
+#include "output/input_files.h"
 #include "povgen/export_params.h"
 
 namespace raintrace::output {
@@ -106,6 +107,9 @@ struct Manifest {
   std::string shared_hash;
   int frame_count = 0;  ///< frames the scene has ([output] frames); 0 before the first export
   std::vector<FrameEntry> frames;  ///< ascending by number
+  /// The files POV-Ray reads, as raintrace last wrote or saw them (input_files.h): a file
+  /// edited by hand since changes the input hashes of the frames that read it.
+  std::vector<InputFileRecord> input_files;
   /// What the MP4/GIF and the contact sheet were made from (assembly_key of the frames they
   /// show); empty when they were not made.
   std::string movie_source;

@@ -61,6 +61,7 @@ Manifest sample() {
   m.develop.fov_deg = 42.5;
   m.develop.aperture_m = 0.0035;
   m.frames.push_back(f);
+  m.input_files.push_back({"environment.inc", 100834, 1764817932123456789LL, "7777", true});
   return m;
 }
 
@@ -94,6 +95,7 @@ TEST(Manifest, RoundTripsThroughJson) {
   EXPECT_EQ(f.mask->status, FrameStatus::rendered);
   EXPECT_EQ(f.mask->size, 5000000000ULL);
   EXPECT_EQ(f.mask->file_hash, "dddd");
+  EXPECT_EQ(back.input_files, m.input_files);  // nanosecond times past 53 bits survive too
   EXPECT_EQ(to_json(back), to_json(m));
 }
 

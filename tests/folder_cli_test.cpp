@@ -379,6 +379,49 @@ TEST_F(PovrayFolderCli, AFolderRenderedByHandIsDevelopedNotRenderedAgain) {
   expect_same_as_clean_render(dir / "out", dir / "clean");
 }
 
+/// The frame's EXR at its centre: red over green.
+double centre_red_over_green(const fs::path& exr) {
+  auto in = OIIO::ImageInput::open(exr.string());
+  if (!in) return 0.0;
+  const auto& spec = in->spec();
+  std::vector<float> pixels(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data())) return 0.0;
+  const std::size_t at =
+      (static_cast<std::size_t>(spec.height / 2) * spec.width + spec.width / 2) * spec.nchannels;
+  return pixels[at] / std::max(pixels[at + 1], 1e-6f);
+}
+
+TEST_F(PovrayFolderCli, AnIncludeEditedInTheFolderIsRenderedByTheFolderAndReplacedByTheScene) {
+  // The folder is plain POV-Ray: a user may change environment.inc in it and render the folder.
+  // The frames rendered before the edit must not count as up to date.
+  const auto dir = testing::fresh_test_dir("cli_hand_edit");
+  const auto scene = write_scene(dir, 3);
+  const std::string out = (dir / "out").string();
+  const std::vector<std::string> from_scene{"render", scene.string(), "-o", out, "--no-movie"};
+  ASSERT_EQ(run_raintrace(from_scene, dir / "a.log").exit_code, 0);
+  const auto exr = dir / "out" / final_image_name(Pass::image, 2);
+  EXPECT_LT(centre_red_over_green(exr), 4.0);  // the street's warm light: ~2
+  // A red lamp in the middle of the view.
+  std::ofstream{dir / "out" / "environment.inc", std::ios::app}
+      << "sphere { <0, 1.3, -3>, 0.2 pigment { rgb <1, 0, 0> } finish { emission 4 } }\n";
+  const auto edited = run_raintrace({"render", out, "--no-movie"}, dir / "b.log");
+  EXPECT_EQ(edited.exit_code, 0) << edited.output;
+  EXPECT_TRUE(contains(edited.output, "environment.inc edited in " + out)) << edited.output;
+  EXPECT_TRUE(contains(edited.output, "3 to render: 3 inputs changed")) << edited.output;
+  EXPECT_GT(centre_red_over_green(exr), 10.0);
+  const auto again = run_raintrace({"render", out, "--no-movie"}, dir / "c.log");
+  EXPECT_TRUE(contains(again.output, "0 frames rendered, 3 up to date")) << again.output;
+  // The scene file writes its own environment.inc back, says so, and renders it.
+  const auto back = run_raintrace(from_scene, dir / "d.log");
+  EXPECT_EQ(back.exit_code, 0) << back.output;
+  EXPECT_TRUE(contains(back.output, "environment.inc in " + out + " was edited by hand"))
+      << back.output;
+  EXPECT_TRUE(contains(back.output, "3 frames rendered")) << back.output;
+  EXPECT_LT(centre_red_over_green(exr), 4.0);  // the street's warm light: ~2
+  clean_render(scene, dir / "clean", {"--no-movie"});
+  expect_same_as_clean_render(dir / "out", dir / "clean");
+}
+
 TEST_F(PovrayFolderCli, ADevelopKilledHalfwayLeavesOnlyWholePngsAndTheRunResumes) {
   const auto dir = testing::fresh_test_dir("cli_develop_killed");
   const int frames = 12;
