@@ -317,7 +317,8 @@ TEST(ExampleFigures, DefaultStreetMirrorsTheLampsHazeInTheWetRoad) {
 // small curved mirrors: where the smooth car shows one broad highlight or none, the beaded one
 // sends the lamps' glints to the camera from many points — pixels of the two nearest cars at
 // least 0.05 brighter (linear; their body is ~0.02-0.05) with the beads than without. Measured:
-// 13 of 9100 on the paint; 27 while the sheets standing for the wet road's glossy streaks, which
+// 7 of 9100 on the paint since the kebab house's lit sign, which the beads mirror too, became
+// the shorter KEBABS (33f6cd6); 13 before it; 27 while the sheets standing for the wet road's glossy streaks, which
 // the beads mirror too, carried each streetlight's lens unforeshortened (3–6 times too bright);
 // before that 22 when the beads covered all the paint (they stand in patches with smooth sheets
 // of water between), 28 while the second car was grey rather than silver, 49 while the glass
@@ -333,7 +334,7 @@ TEST(ExampleFigures, DefaultStreetCarsGlintWithRainBeads) {
   const int pixels = (500 - 360) * (225 - 160);
   const int glints = pixels_brighter(wet, dry, 360, 500, 160, 225, 0.05f);
   std::printf("glints on the nearest cars: %d of %d pixels\n", glints, pixels);
-  EXPECT_GE(glints, 8) << "the wet cars show no glints of their rain beads";
+  EXPECT_GE(glints, 4) << "the wet cars show no glints of their rain beads";
   EXPECT_LT(glints, pixels / 10) << "the beads glitter everywhere, not in the highlights";
 }
 
