@@ -318,12 +318,12 @@ TEST(ExampleFigures, DefaultStreetMirrorsTheLampsHazeInTheWetRoad) {
 // sends the lamps' glints to the camera from many points — pixels of the two nearest cars at
 // least 0.05 brighter (linear; their body is ~0.02-0.05) with the beads than without. Measured:
 // 7 of 9100 on the paint since the kebab house's lit sign, which the beads mirror too, became
-// the shorter KEBABS (33f6cd6); 13 before it; 27 while the sheets standing for the wet road's glossy streaks, which
-// the beads mirror too, carried each streetlight's lens unforeshortened (3–6 times too bright);
-// before that 22 when the beads covered all the paint (they stand in patches with smooth sheets
-// of water between), 28 while the second car was grey rather than silver, 49 while the glass
-// carried beads too, before it became clear enough to show the cabin (a beaded pane read as
-// salt). 0 without beads, by construction.
+// the shorter KEBABS (33f6cd6); 13 before it; 27 while the sheets standing for the wet road's
+// glossy streaks, which the beads mirror too, carried each streetlight's lens unforeshortened
+// (3–6 times too bright); before that 22 when the beads covered all the paint (they stand in
+// patches with smooth sheets of water between), 28 while the second car was grey rather than
+// silver, 49 while the glass carried beads too, before it became clear enough to show the cabin
+// (a beaded pane read as salt). 0 without beads, by construction.
 TEST(ExampleFigures, DefaultStreetCarsGlintWithRainBeads) {
   if (!have_povray()) GTEST_SKIP() << "povray is not installed";
   const auto [wet, dry] =
