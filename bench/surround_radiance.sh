@@ -36,16 +36,19 @@ camera { spherical angle 360 180 location 0 look_at z }
 sky_sphere { pigment { function { P(z) * sqrt(max(0, 1 - y * y)) } color_map { [0 rgb 0] [1 rgb 1] } } }
 POV
 povray weight.pov +W360 +H180 +FE +Oweight.exr -D -V -GA >/dev/null 2>&1
+# The camera, once: the line of sight of every point runs from it, and the environment faces it.
+camera=""
+camera_line=""
+if [[ -n "${CAMERA:-}" ]]; then
+  read -r cx cy cz <<<"$CAMERA"
+  camera="<$cx,$cy,$cz>"
+  camera_line="#declare RT_CameraPosition = $camera;"
+fi
 sum=(0 0 0); n=0
 for ((i = 0; i < ${#points[@]}; i += 3)); do
   p="<${points[i]},${points[i+1]},${points[i+2]}>"
   sight="z"
-  camera_line=""
-  if [[ -n "${CAMERA:-}" ]]; then
-    read -r cx cy cz <<<"$CAMERA"
-    sight="($p - <$cx,$cy,$cz>)"
-    camera_line="#declare RT_CameraPosition = <$cx,$cy,$cz>;"
-  fi
+  if [[ -n "$camera" ]]; then sight="($p - $camera)"; fi
   cat > env.pov <<POV
 #version 3.7;
 #declare RT_Mask = 0;
