@@ -10,6 +10,7 @@
 #include "output/image_check.h"
 #include "povgen/content_hash.h"
 #include "povgen/frame_text.h"
+#include "povgen/ground_scene.h"
 
 namespace raintrace::output {
 namespace {
@@ -80,7 +81,22 @@ void remove_file(const fs::path& dir, const std::string& relative) {
   fs::remove(dir / path, ignored);
 }
 
-// Removes the files the manifest records for a frame: its .pov files, its EXR, PNG and mask.
+// The files POV-Ray reads for this frame alone: its .pov files and, with puddles, its ripple
+// map (written beside frames/ before the frame's text, which names it).
+std::vector<std::string> frame_inputs(const FrameEntry& f) {
+  std::vector<std::string> files{f.image.scene};
+  if (f.mask) files.push_back(f.mask->scene);
+  files.push_back(povgen::ripple_map_name(f.number));
+  return files;
+}
+
+bool reads(const FrameEntry& f, const std::string& path) {
+  const auto files = frame_inputs(f);
+  return std::find(files.begin(), files.end(), path) != files.end();
+}
+
+// Removes the files raintrace wrote for a frame: its .pov files, its EXR, PNG, mask and ripple
+// map.
 void remove_frame_files(const fs::path& dir, const FrameEntry& f) {
   for (const PictureRecord* p : {&f.image, f.mask ? &*f.mask : nullptr}) {
     if (p == nullptr) continue;
@@ -88,6 +104,7 @@ void remove_frame_files(const fs::path& dir, const FrameEntry& f) {
     remove_file(dir, p->path);
   }
   remove_file(dir, f.developed.path);
+  remove_file(dir, povgen::ripple_map_name(f.number));
 }
 
 // Removes every file the manifest records: frame files, pictures, movie and contact sheet.
@@ -346,10 +363,8 @@ void FolderState::notice_hand_edits() {
     if (check != InputFileCheck::edited) continue;
     m_edited_inputs.push_back(r.path);
     const std::string edit = r.path + '\0' + r.hash + '\0';
-    const auto reader =
-        std::find_if(m_manifest.frames.begin(), m_manifest.frames.end(), [&](const FrameEntry& f) {
-          return f.image.scene == r.path || (f.mask && f.mask->scene == r.path);
-        });
+    const auto reader = std::find_if(m_manifest.frames.begin(), m_manifest.frames.end(),
+                                     [&](const FrameEntry& f) { return reads(f, r.path); });
     if (reader != m_manifest.frames.end()) {
       frame_edits[reader->number] += edit;
     } else {
@@ -413,7 +428,9 @@ void FolderState::adopt_rendered_by_hand() {
       std::error_code error;
       const auto written = fs::last_write_time(m_dir / p->path, error);
       if (error) continue;
-      const auto newest_input = std::max({inputs, mtime(f.image.scene), mtime(p->scene)});
+      auto newest_input = inputs;
+      for (const std::string& own : frame_inputs(f))
+        newest_input = std::max(newest_input, mtime(own));
       if (written <= newest_input) continue;  // older than what it should show
       const auto& id = m_manifest.identity;
       const auto facts = file_facts(m_dir / p->path);
@@ -457,10 +474,10 @@ void FolderState::begin_export(const std::string& shared_hash, FrameSpan range, 
   for (auto it = beyond; it != frames.end(); ++it) remove_frame_files(m_dir, *it);
   frames.erase(beyond, frames.end());
   std::erase_if(m_manifest.input_files, [&](const InputFileRecord& r) {
-    return r.path.starts_with(std::string{kFramesDir} + "/") &&
-           std::none_of(frames.begin(), frames.end(), [&](const FrameEntry& f) {
-             return f.image.scene == r.path || (f.mask && f.mask->scene == r.path);
-           });
+    const bool own = r.path.starts_with(std::string{kFramesDir} + "/") ||
+                     r.path.starts_with(std::string{povgen::kRippleFolder} + "/");
+    return own && std::none_of(frames.begin(), frames.end(),
+                               [&](const FrameEntry& f) { return reads(f, r.path); });
   });
   record_inputs({std::begin(kSharedInputs), std::end(kSharedInputs)});
   const bool shared_changed =
@@ -490,9 +507,7 @@ void FolderState::frame_exported(int number, const std::string& input_hash) {
   FrameEntry* f = find_mutable(number);
   if (f == nullptr) return;  // not in this export's range: nothing vouches for it
   f->input_hash = input_hash;
-  std::vector<std::string> files{f->image.scene};
-  if (f->mask) files.push_back(f->mask->scene);
-  record_inputs(files);
+  record_inputs(frame_inputs(*f));  // a frame without a ripple map records none
   for (PictureRecord* p : {&f->image, f->mask ? &*f->mask : nullptr}) {
     if (p != nullptr && p->status == FrameStatus::rendered && p->rendered_hash != input_hash) {
       p->status = FrameStatus::exported;  // rendered_hash stays: "inputs changed"

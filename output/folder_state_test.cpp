@@ -13,6 +13,7 @@
 #include <OpenImageIO/imagebufalgo.h>
 
 #include "output/test_dir.h"
+#include "povgen/ground_scene.h"
 
 namespace raintrace::output {
 namespace {
@@ -315,6 +316,37 @@ TEST(HandEdits, AnEditedFrameChangesThatFramesInputsOnly) {
   EXPECT_EQ(folder.decide(Pass::image, 1, false), RenderReason::up_to_date);
   EXPECT_EQ(folder.decide(Pass::image, 2, false), RenderReason::inputs_changed);
   EXPECT_EQ(folder.decide(Pass::image, 3, false), RenderReason::up_to_date);
+}
+
+// With puddles, each frame's text names its ripple map (ripples/ripple_NNNN.png), which the
+// export writes just before the frame's text.
+TEST(HandEdits, AnEditedRippleMapChangesThatFramesInputsOnlyAndGoesWithItsFrame) {
+  const auto dir = testing::fresh_test_dir("hand_edit_ripples");
+  {
+    auto folder = FolderState::claim(dir, identity(), false, "test");
+    folder.begin_export("shared", {1, 3}, 3);
+    for (int n = 1; n <= 3; ++n) {
+      write(dir / povgen::ripple_map_name(n), "ripple pixels " + std::to_string(n));
+      write(dir / frame_scene_name(Pass::image, n), "frame " + std::to_string(n));
+      folder.frame_exported(n, "shared+" + std::to_string(n));
+      write(dir / final_image_name(Pass::image, n), "image bytes " + std::to_string(n));
+      folder.rendered(Pass::image, n, 0.5);
+    }
+    folder.save();
+  }
+  write(dir / povgen::ripple_map_name(2), "ripple pixels X");  // the same size, other bytes
+  auto folder = FolderState::open(dir, "test");
+  EXPECT_EQ(folder.newly_edited_inputs(), std::vector<std::string>{povgen::ripple_map_name(2)});
+  EXPECT_EQ(folder.decide(Pass::image, 1, false), RenderReason::up_to_date);
+  EXPECT_EQ(folder.decide(Pass::image, 2, false), RenderReason::inputs_changed);
+  EXPECT_EQ(folder.decide(Pass::image, 3, false), RenderReason::up_to_date);
+  // A shorter scene takes the maps of the frames it no longer has, and their records.
+  folder.begin_export("shared", {1, 2}, 2);
+  EXPECT_FALSE(fs::exists(dir / povgen::ripple_map_name(3)));
+  EXPECT_TRUE(fs::exists(dir / povgen::ripple_map_name(2)));
+  for (const auto& r : folder.manifest().input_files) {
+    EXPECT_NE(r.path, povgen::ripple_map_name(3));
+  }
 }
 
 TEST(HandEdits, APictureRenderedByHandSinceTheEditIsAdoptedTheOthersRenderedAgain) {
