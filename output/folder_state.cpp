@@ -98,13 +98,11 @@ bool reads(const FrameEntry& f, const std::string& path) {
 // Removes the files raintrace wrote for a frame: its .pov files, its EXR, PNG, mask and ripple
 // map.
 void remove_frame_files(const fs::path& dir, const FrameEntry& f) {
+  for (const std::string& input : frame_inputs(f)) remove_file(dir, input);
   for (const PictureRecord* p : {&f.image, f.mask ? &*f.mask : nullptr}) {
-    if (p == nullptr) continue;
-    remove_file(dir, p->scene);
-    remove_file(dir, p->path);
+    if (p != nullptr) remove_file(dir, p->path);
   }
   remove_file(dir, f.developed.path);
-  remove_file(dir, povgen::ripple_map_name(f.number));
 }
 
 // Removes every file the manifest records: frame files, pictures, movie and contact sheet.
@@ -473,11 +471,12 @@ void FolderState::begin_export(const std::string& shared_hash, FrameSpan range, 
                                    [&](const FrameEntry& f) { return f.number > frame_count; });
   for (auto it = beyond; it != frames.end(); ++it) remove_frame_files(m_dir, *it);
   frames.erase(beyond, frames.end());
+  // The records of files no frame left reads alone; the shared files' stay.
   std::erase_if(m_manifest.input_files, [&](const InputFileRecord& r) {
-    const bool own = r.path.starts_with(std::string{kFramesDir} + "/") ||
-                     r.path.starts_with(std::string{povgen::kRippleFolder} + "/");
-    return own && std::none_of(frames.begin(), frames.end(),
-                               [&](const FrameEntry& f) { return reads(f, r.path); });
+    const bool shared = std::find(std::begin(kSharedInputs), std::end(kSharedInputs), r.path) !=
+                        std::end(kSharedInputs);
+    return !shared && std::none_of(frames.begin(), frames.end(),
+                                   [&](const FrameEntry& f) { return reads(f, r.path); });
   });
   record_inputs({std::begin(kSharedInputs), std::end(kSharedInputs)});
   const bool shared_changed =
