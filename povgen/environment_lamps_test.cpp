@@ -69,9 +69,10 @@ std::vector<double> declared_array(const std::string& text, const std::string& n
 
 TEST(EnvironmentLamps, NightStreetsPostListIsWhereTheTemplateDrawsItsPosts) {
   const std::string& text = environment_template("night_street");
-  // The post as RT_StreetLight stands it, and as RT_WordCentre expects it.
-  ASSERT_NE(text.find("#local PoleX = Side * (RT_KerbX + 0.35);"), std::string::npos);
-  ASSERT_NE(text.find("#local PostX = RT_Side * (RT_KerbX + 0.35);"), std::string::npos);
+  // The post's distance from the kerb, one value that RT_StreetLight stands it at and
+  // RT_WordCentre expects it at.
+  ASSERT_NE(text.find("#local PoleX = Side * (RT_KerbX + RT_PostOut);"), std::string::npos);
+  ASSERT_NE(text.find("#local PostX = RT_Side * (RT_KerbX + RT_PostOut);"), std::string::npos);
   std::vector<double> drawn_z;
   std::vector<double> drawn_side;
   const std::regex call(R"(\nRT_StreetLight\((-?[0-9.]+), (-?1), )");
