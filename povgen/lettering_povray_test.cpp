@@ -3,6 +3,7 @@
 // returns) are painted metal, as a channel letter's are.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -69,6 +70,55 @@ TEST(PovRayLettering, ALitLetterGlowsThroughItsFaceNotItsSides) {
   std::printf("a lit word's light 80 degrees off its normal over head-on: %.4f (cos 80 = %.4f)\n",
               oblique_light / head_on_light, expected);
   EXPECT_NEAR(oblique_light / head_on_light, expected, 0.1 * expected);
+  fs::remove_all(dir);
+}
+
+// A signwriter spaces fascia capitals apart, and the emboldening (RT_Embolden to each side)
+// would close the font's own gaps by a third: seen along the street, letters that touch run
+// together into blobs ("4EBABS", "mushy, half-formed letters": blind viewers). Head-on, every
+// letter of KEBAB HOUSE must stand apart from the next, in columns of sky at least
+// kLetterGapCaps of the capital height wide. Measured (capitals 34 pixels tall): 0.118 with
+// RT_LetterSpacing 0.1, 0.059 without it.
+constexpr double kLetterGapCaps = 0.09;
+
+TEST(PovRayLettering, AFasciaWordsLettersStandApart) {
+  SKIP_WITHOUT_POVRAY();
+  const fs::path dir = testing::folder_with_street("povray_test_letter_gaps");
+  const std::string options = testing::square_size(kLetteringPixels) + " -A";
+  const auto word = testing::trace_linear(dir, "word", lettering_scene(0), options);
+  const auto sky = testing::trace_linear(dir, "sky", lettering_scene(0, false), options);
+  ASSERT_EQ(word.size(), 3u * kLetteringPixels * kLetteringPixels);
+  ASSERT_EQ(sky.size(), word.size());
+  // Which columns and rows hold a glowing letter (well above the sky's light).
+  std::vector<bool> column_lit(kLetteringPixels, false);
+  int top = kLetteringPixels, bottom = -1;
+  for (int y = 0; y < kLetteringPixels; ++y) {
+    for (int x = 0; x < kLetteringPixels; ++x) {
+      const std::size_t i = 3u * (std::size_t(y) * kLetteringPixels + std::size_t(x));
+      if (word[i] - sky[i] > 1.0) {
+        column_lit[std::size_t(x)] = true;
+        top = std::min(top, y);
+        bottom = std::max(bottom, y);
+      }
+    }
+  }
+  ASSERT_GE(bottom, top) << "the camera sees no letters";
+  const double cap_px = bottom - top + 1;  // capitals only: KEBAB HOUSE has no descender
+  // Runs of lit columns: one a letter; the gaps between them, in capital heights.
+  std::vector<int> gaps;
+  int run_end = -1;
+  for (int x = 0; x < kLetteringPixels; ++x) {
+    if (!column_lit[std::size_t(x)]) continue;
+    if (run_end >= 0 && x > run_end + 1) gaps.push_back(x - run_end - 1);
+    run_end = x;
+  }
+  // Ten letters, nine gaps, one of them the space between the words.
+  EXPECT_EQ(gaps.size(), 9u) << "letters touching or split";
+  ASSERT_FALSE(gaps.empty());
+  const double narrowest = *std::min_element(gaps.begin(), gaps.end()) / cap_px;
+  std::printf("KEBAB HOUSE head-on: %zu gaps, the narrowest %.3f of the capital height\n",
+              gaps.size(), narrowest);
+  EXPECT_GE(narrowest, kLetterGapCaps);
   fs::remove_all(dir);
 }
 
