@@ -259,8 +259,10 @@ RenderInput prepare(const RenderArgs& args, int povray_processes) {
   if (args.out.empty()) throw std::invalid_argument("-o OUT is required with a scene file");
   Scene scene = load_scene_file(input);
   if (args.seed) scene.sim.seed = *args.seed;
-  if (args.width != 0) scene.look.width = args.width;
-  if (args.height != 0) scene.look.height = args.height;
+  if (args.width != 0 || args.height != 0) {
+    set_image_size(scene, args.width != 0 ? args.width : scene.look.width,
+                   args.height != 0 ? args.height : scene.look.height);
+  }
   if (!args.quality.empty()) {
     scene.look.quality =
         args.quality == "final" ? povgen::Quality::final : povgen::Quality::preview;

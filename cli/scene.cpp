@@ -205,15 +205,21 @@ Scene load_scene_string(std::string_view toml_text, const std::string& source_na
   }
   root.finish();
 
-  scene.sim.camera.aspect = static_cast<double>(scene.look.width) / scene.look.height;
-  scene.sim.camera.width_px = scene.look.width;
-  scene.look.camera = scene.sim.camera;
+  set_image_size(scene, scene.look.width, scene.look.height);
   scene.look.rain = scene.sim.rain;
   resolve_ground(scene);
   if (scene.look.environment.include_path.empty()) {
     scene.sim.lamps = povgen::environment_lamps(scene.look.environment.name);
   }
   return scene;
+}
+
+void set_image_size(Scene& scene, int width, int height) {
+  scene.look.width = width;
+  scene.look.height = height;
+  scene.sim.camera.aspect = static_cast<double>(width) / height;
+  scene.sim.camera.width_px = width;
+  scene.look.camera = scene.sim.camera;
 }
 
 Scene load_scene_file(const std::filesystem::path& path) {

@@ -85,6 +85,13 @@ Scene load_scene_file(const std::filesystem::path& path);
 Scene load_scene_string(std::string_view toml_text, const std::string& source_name,
                         const std::filesystem::path& base_dir);
 
+/// Sets the picture's size in pixels and what the simulation takes from it: the camera's aspect
+/// and its width in pixels, by which the rain, the splashes and the ripples are drawn no finer
+/// than a pixel. The loader sets [output] width and height this way; `raintrace render
+/// --width/--height` must too, so that the size given on the command line makes the same frames
+/// as the same size written in the scene file.
+void set_image_size(Scene& scene, int width, int height);
+
 struct FrameRange {
   int first = 1;  ///< 1-based, inclusive
   int last = 1;   ///< inclusive

@@ -300,6 +300,39 @@ TEST_F(PovrayRenderCli, AFrameRenderedAloneIsUpToDateInALaterRunOfARangeHoldingI
       << range.output;
 }
 
+// `--width/--height` are the scene's [output] size given on the command line: the simulation's
+// camera takes its aspect and its pixels from them (the view it fills with rain, how fine the
+// rain, the splashes and the ripples are drawn). Until 2026-12-04 the overrides reached the
+// picture alone, so a 16:9 scene rendered at 4:3 was simulated for a 16:9 view, with the
+// scene file's pixels, under the same scene hash as the scene file that says 4:3.
+TEST_F(PovrayRenderCli, TheSizeOnTheCommandLineMakesTheFramesOfThatSizeInTheSceneFile) {
+  const auto dir = testing::fresh_test_dir("cli_size_override");
+  const auto wide = write_scene(dir, 1, "wide.toml");  // 64×36
+  std::string text = read_all(wide);
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+  };
+  replace("width = 64", "width = 128");
+  replace("height = 36", "height = 96");
+  const auto narrow = dir / "narrow.toml";
+  std::ofstream{narrow} << text;
+  const auto overridden = run_raintrace({"render", wide.string(), "-o", (dir / "a").string(),
+                                         "--width", "128", "--height", "96", "--no-movie"},
+                                        dir / "log_a");
+  ASSERT_EQ(overridden.exit_code, 0) << overridden.output;
+  const auto written =
+      run_raintrace({"export", narrow.string(), "-o", (dir / "b").string()}, dir / "log_b");
+  ASSERT_EQ(written.exit_code, 0) << written.output;
+  const std::string expected = frame_file(dir / "b", 1);
+  EXPECT_FALSE(expected.empty());
+  // The frame's text names its ripple map by a hash of its pixels, so equal text is an equal map.
+  EXPECT_TRUE(frame_file(dir / "a", 1) == expected) << "the overridden size simulated another view";
+  EXPECT_EQ(read_all(dir / "a/scene.inc"), read_all(dir / "b/scene.inc"));
+  EXPECT_TRUE(image_is_complete(dir / "a" / final_image_name(Pass::image, 1), 128, 96));
+}
+
 TEST_F(PovrayRenderCli, SigkillWhileExportingAndRenderingThenRerunRedoesOnlyUnfinishedFrames) {
   const auto dir = testing::fresh_test_dir("cli_kill_scene");
   const int frames = 16;
