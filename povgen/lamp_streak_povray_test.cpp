@@ -141,8 +141,7 @@ TEST(PovRayLampStreak, AMirrorShowsALampsLightOnce) {
 // 3 %, spread wider and no brighter: the pixels it lights past a hundredth of the even copy's
 // brightest at least 2.5 times as many (the ellipse has 4 times the lens's area, its light
 // falling to 0 at the rim), its brightest at most that of the even copy. Measured: 1.025 of the
-// light (the ellipse reaches nearer the mirror point, which sees that part less foreshortened;
-// without the 3/π it is 1.07), 3.1 times the pixels, 0.90 of the peak.
+// light (without the factor 3/π it would be 1.07), 3.1 times the pixels, 0.90 of the peak.
 TEST(PovRayLampStreak, AStreetlightsMirroredCopyIsItsLensBlurredWithItsLightKept) {
   SKIP_WITHOUT_POVRAY();
   const fs::path dir = testing::folder_with_street("povray_test_lens_blur");
