@@ -87,6 +87,14 @@ TEST(PovRayLampStreak, AStreetlightsStreakIsItsLensForeshortenedAsTheRoadSeesIt)
   fs::remove_all(dir);
 }
 
+// The lens the mirror tests light: facing down, 7 cm above the point its light is counted from,
+// as the street's are; thin, so that all its light leaves through its face, and three times as
+// wide and deep as theirs, so that its foreshortened image spans a few rows and its light is
+// sampled well. As a shape (RT_MirroredLens) and as RT_MirroredFlatLens's centre and half sizes.
+const std::string kTestLens =
+    "box { <-0.84, -0.0001, -0.36>, <0.84, 0, 0.36> translate <0, 5.95, 22> }";
+const std::string kTestFlatLens = "<0, 5.95, 22>, <0.84, 0.0001, 0.36>";
+
 // Every mirror shows a lamp's light once: its lens at RT_Mirror of its light (a streetlight's
 // RT_MirroredFlatLens, a blurred copy only reflections see) and its streak the rest. In a perfect
 // mirror the two must carry the light of the lens alone, mirrored at its full light, within 3 %:
@@ -100,22 +108,16 @@ TEST(PovRayLampStreak, AStreetlightsStreakIsItsLensForeshortenedAsTheRoadSeesIt)
 TEST(PovRayLampStreak, AMirrorShowsALampsLightOnce) {
   SKIP_WITHOUT_POVRAY();
   const fs::path dir = testing::folder_with_street("povray_test_lamp_once");
-  // A lens facing down, 7 cm above the point its light is counted from, as the street's are;
-  // thin, so that all its light leaves through its face, and three times as wide and deep as
-  // theirs, so that its foreshortened image spans a few rows and its light is sampled well.
-  const std::string lens =
-      "box { <-0.84, -0.0001, -0.36>, <0.84, 0, 0.36> translate <0, 5.95, 22> }";
   const std::string options = testing::square_size(kSize) + " +A0.01 +AM2 +R3";
   const auto copy = testing::trace_linear(
-      dir, "copy",
-      mirror_scene("RT_MirroredFlatLens(<0, 5.95, 22>, <0.84, 0.0001, 0.36>, <1, 1, 1>, 40)"),
+      dir, "copy", mirror_scene("RT_MirroredFlatLens(" + kTestFlatLens + ", <1, 1, 1>, 40)"),
       options);
   const auto streak = testing::trace_linear(
       dir, "streak", mirror_scene("RT_LampStreak(<0, 5.88, 22>, 40 * 1.68 * 0.72, <1, 1, 1>, 1)"),
       options);
   const auto alone = testing::trace_linear(
       dir, "lens",
-      mirror_scene("object { " + lens +
+      mirror_scene("object { " + kTestLens +
                    " texture { pigment { rgb 1 } finish { ambient 0 diffuse 0 emission 40 } } "
                    "no_image }"),
       options);
@@ -147,13 +149,9 @@ TEST(PovRayLampStreak, AStreetlightsMirroredCopyIsItsLensBlurredWithItsLightKept
   const fs::path dir = testing::folder_with_street("povray_test_lens_blur");
   const std::string options = testing::square_size(kSize) + " +A0.01 +AM2 +R3";
   const auto even = testing::trace_linear(
-      dir, "even",
-      mirror_scene("RT_MirroredLens(box { <-0.84, -0.0001, -0.36>, <0.84, 0, 0.36> "
-                   "translate <0, 5.95, 22> }, <1, 1, 1>, 40)"),
-      options);
+      dir, "even", mirror_scene("RT_MirroredLens(" + kTestLens + ", <1, 1, 1>, 40)"), options);
   const auto blurred = testing::trace_linear(
-      dir, "blurred",
-      mirror_scene("RT_MirroredFlatLens(<0, 5.95, 22>, <0.84, 0.0001, 0.36>, <1, 1, 1>, 40)"),
+      dir, "blurred", mirror_scene("RT_MirroredFlatLens(" + kTestFlatLens + ", <1, 1, 1>, 40)"),
       options);
   const auto none = testing::trace_linear(dir, "none", mirror_scene(""), options);
   ASSERT_EQ(even.size(), 3u * kSize * kSize);
