@@ -4,7 +4,6 @@
 // down at which that point sees the lens; the streak must carry the lens's light weighted so.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -157,24 +156,13 @@ TEST(PovRayLampStreak, AStreetlightsMirroredCopyIsItsLensBlurredWithItsLightKept
   ASSERT_EQ(even.size(), 3u * kSize * kSize);
   ASSERT_EQ(blurred.size(), even.size());
   ASSERT_EQ(none.size(), even.size());
-  double even_light = 0.0, blurred_light = 0.0, even_peak = 0.0, blurred_peak = 0.0;
-  for (std::size_t i = 0; i < even.size(); i += 3) {
-    even_light += even[i] - none[i];
-    blurred_light += blurred[i] - none[i];
-    even_peak = std::max(even_peak, static_cast<double>(even[i] - none[i]));
-    blurred_peak = std::max(blurred_peak, static_cast<double>(blurred[i] - none[i]));
-  }
-  ASSERT_GT(even_light, 0.0) << "the mirror shows no lens";
-  int even_lit = 0, blurred_lit = 0;
-  for (std::size_t i = 0; i < even.size(); i += 3) {
-    if (even[i] - none[i] > 0.01 * even_peak) ++even_lit;
-    if (blurred[i] - none[i] > 0.01 * even_peak) ++blurred_lit;
-  }
+  const testing::LightSpread spread = testing::light_spread(even, blurred, none);
+  ASSERT_GT(spread.sharp_light, 0.0) << "the mirror shows no lens";
   std::printf("the blurred copy's light %.4f of the even copy's, %d pixels against %d, peak %.3f\n",
-              blurred_light / even_light, blurred_lit, even_lit, blurred_peak / even_peak);
-  EXPECT_NEAR(blurred_light / even_light, 1.0, 0.03);
-  EXPECT_GE(blurred_lit, 2.5 * even_lit) << "the copy is not spread";
-  EXPECT_LE(blurred_peak, even_peak * 1.001) << "the copy is brighter than the lens's own";
+              spread.light_ratio, spread.blurred_lit, spread.sharp_lit, spread.peak_ratio);
+  EXPECT_NEAR(spread.light_ratio, 1.0, 0.03);
+  EXPECT_GE(spread.blurred_lit, 2.5 * spread.sharp_lit) << "the copy is not spread";
+  EXPECT_LE(spread.peak_ratio, 1.001) << "the copy is brighter than the lens's own";
   fs::remove_all(dir);
 }
 

@@ -155,26 +155,15 @@ TEST(PovRayLettering, AMirrorSeesALitWordBlurredWithItsLightKept) {
   ASSERT_EQ(sharp.size(), 3u * kLetteringPixels * kLetteringPixels);
   ASSERT_EQ(blurred.size(), sharp.size());
   ASSERT_EQ(none.size(), sharp.size());
-  double sharp_light = 0.0, blurred_light = 0.0, sharp_peak = 0.0, blurred_peak = 0.0;
-  for (std::size_t i = 0; i < sharp.size(); i += 3) {
-    sharp_light += sharp[i] - none[i];
-    blurred_light += blurred[i] - none[i];
-    sharp_peak = std::max(sharp_peak, static_cast<double>(sharp[i] - none[i]));
-    blurred_peak = std::max(blurred_peak, static_cast<double>(blurred[i] - none[i]));
-  }
-  ASSERT_GT(sharp_light, 0.0) << "the mirror shows no word";
-  int sharp_lit = 0, blurred_lit = 0;
-  for (std::size_t i = 0; i < sharp.size(); i += 3) {
-    if (sharp[i] - none[i] > 0.01 * sharp_peak) ++sharp_lit;
-    if (blurred[i] - none[i] > 0.01 * sharp_peak) ++blurred_lit;
-  }
+  const testing::LightSpread spread = testing::light_spread(sharp, blurred, none);
+  ASSERT_GT(spread.sharp_light, 0.0) << "the mirror shows no word";
   std::printf(
       "a mirrored word's blurred copy: %.4f of its letters' light, %d pixels against %d, "
       "peak %.3f\n",
-      blurred_light / sharp_light, blurred_lit, sharp_lit, blurred_peak / sharp_peak);
-  EXPECT_NEAR(blurred_light / sharp_light, 1.0, 0.05);
-  EXPECT_GE(blurred_lit, 1.5 * sharp_lit) << "the copy is not spread";
-  EXPECT_LT(blurred_peak, sharp_peak) << "the copy is as bright as the letters";
+      spread.light_ratio, spread.blurred_lit, spread.sharp_lit, spread.peak_ratio);
+  EXPECT_NEAR(spread.light_ratio, 1.0, 0.05);
+  EXPECT_GE(spread.blurred_lit, 1.5 * spread.sharp_lit) << "the copy is not spread";
+  EXPECT_LT(spread.peak_ratio, 1.0) << "the copy is as bright as the letters";
   fs::remove_all(dir);
 }
 

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -78,6 +79,38 @@ inline std::vector<float> trace_linear(const std::filesystem::path& dir, const s
       << name << ":\n"
       << log_of(dir);
   return read_rgb(dir / (name + ".exr"));
+}
+
+/// How a light drawn two ways spreads, in the red of two pictures of it (`sharp`, `blurred`)
+/// with `background` (the same scene without it) taken off: the blurred one's light and
+/// brightest pixel as shares of the sharp one's, and how many pixels each lights past a
+/// hundredth of the sharp one's brightest. `sharp_light` is 0 when the sharp picture shows
+/// nothing.
+struct LightSpread {
+  double sharp_light = 0.0;
+  double light_ratio = 0.0;
+  double peak_ratio = 0.0;
+  int sharp_lit = 0;
+  int blurred_lit = 0;
+};
+inline LightSpread light_spread(const std::vector<float>& sharp, const std::vector<float>& blurred,
+                                const std::vector<float>& background) {
+  LightSpread spread;
+  double blurred_light = 0.0, sharp_peak = 0.0, blurred_peak = 0.0;
+  for (std::size_t i = 0; i < sharp.size(); i += 3) {
+    spread.sharp_light += sharp[i] - background[i];
+    blurred_light += blurred[i] - background[i];
+    sharp_peak = std::max(sharp_peak, static_cast<double>(sharp[i] - background[i]));
+    blurred_peak = std::max(blurred_peak, static_cast<double>(blurred[i] - background[i]));
+  }
+  if (spread.sharp_light <= 0.0) return spread;
+  for (std::size_t i = 0; i < sharp.size(); i += 3) {
+    if (sharp[i] - background[i] > 0.01 * sharp_peak) ++spread.sharp_lit;
+    if (blurred[i] - background[i] > 0.01 * sharp_peak) ++spread.blurred_lit;
+  }
+  spread.light_ratio = blurred_light / spread.sharp_light;
+  spread.peak_ratio = blurred_peak / sharp_peak;
+  return spread;
 }
 
 /// A line of SDL that prints a value the scene computed to POV-Ray's debug stream, as
