@@ -139,11 +139,11 @@ std::string mirrored_word_scene(const std::string& blur, bool word = true) {
 
 // Mirrors see a lit word blurred (RT_LetterBlur): its light spread over the word's box widened
 // by half the capital height on every side, at the share of the box its letters light
-// (RT_LetterInk, 0.45: PHARMACY as the road sees it). In a perfect mirror the copy must carry the light of the
-// letters mirrored as they are (RT_LetterBlur 0), within 5 %, spread: the pixels it lights past
-// a hundredth of the letters' brightest at least 1.5 times as many, its brightest below theirs.
-// Measured: 1.04 of the light, 3.9 times the pixels, 0.44 of the peak. The wet road's relief
-// then breaks the word's mirror image into soft dashes of varied brightness instead of the
+// (RT_LetterInk, 0.45: PHARMACY as the road sees it). In a perfect mirror the copy must carry the
+// light of the letters mirrored as they are (RT_LetterBlur 0), within 5 %, spread: the pixels it
+// lights past a hundredth of the letters' brightest at least 1.5 times as many, its brightest below
+// theirs. Measured: 1.04 of the light, 3.9 times the pixels, 0.44 of the peak. The wet road's
+// relief then breaks the word's mirror image into soft dashes of varied brightness instead of the
 // letters' sharp strokes moved about ("sparse, one-pixel dots and dashes", blind viewers).
 TEST(PovRayLettering, AMirrorSeesALitWordBlurredWithItsLightKept) {
   SKIP_WITHOUT_POVRAY();
