@@ -9,6 +9,7 @@
 #include <cmath>
 #include <vector>
 
+#include "povgen/frame_values.h"
 #include "sim/lamp_rain.h"
 #include "sim/world.h"
 
@@ -72,13 +73,17 @@ Budget estimate_budget(const SceneToExport& scene, FrameSpan range, int povray_p
   b.substeps = work.steps_until((range.last - 1) / scene.look.fps, scene.sim.substep_s);
   b.drop_steps = b.drops * b.substeps;
   b.simulation_bytes = kSimulationBase + kSimulationPerDrop * b.drops;
-  // Far streaks below min_streak_coverage are thinned (povgen/export_params.h): the lower it
-  // is, the more are kept, up to all of them at 0.
-  const double coverage = scene.look.min_streak_coverage;
+  // Far streaks below the coverage threshold are thinned (povgen/frame_values.h): the lower it
+  // is, the more are kept, up to all of them at 0. The model's 160 bytes were measured at the
+  // preview's threshold, and a streak is kept with probability coverage / threshold, so a lower
+  // threshold keeps proportionally more. An unset min_streak_coverage (< 0) is the quality's
+  // own threshold; until 2026-12-05 it was budgeted as 0, every streak kept, at 600 bytes.
+  const double threshold = povgen::streak_coverage_threshold(scene.look);
   const double per_view_drop =
-      coverage <= 0.0
+      threshold <= 0.0
           ? kPovrayPerViewDropAll
-          : std::min(kPovrayPerViewDropAll, kPovrayPerViewDropLod / std::min(coverage, 1.0));
+          : std::min(kPovrayPerViewDropAll, kPovrayPerViewDropLod * povgen::kPreviewStreakCoverage /
+                                                std::min(threshold, 1.0));
   b.povray_bytes = kPovrayBase + kPovrayPerPixel * scene.look.width * scene.look.height +
                    per_view_drop * b.drops_in_view;
   b.povray_processes = std::max(0, povray_processes);

@@ -8,7 +8,9 @@
 // (rate_mm_per_h = 500, far_m = 6 / 8 / 10), i.e. ~115 MB + 136 bytes per drop; POV-Ray's peak
 // was 46 / 88 / 141 MB for 0.27 / 0.65 / 1.05 million drops in view at the default streak level
 // of detail (~110–150 bytes per drop in view), and 163 MB for 0.27 million with every streak
-// kept (min_streak_coverage = 0: ~550 bytes). The estimate rounds these up.
+// kept (min_streak_coverage = 0: ~550 bytes). The estimate rounds these up: 160 bytes at the
+// preview's streak threshold, in inverse proportion to a lower one (final's keeps 3.3 times as
+// many far streaks), 600 with every streak kept.
 #pragma once
 
 #include <optional>

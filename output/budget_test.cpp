@@ -56,6 +56,27 @@ TEST(Budget, MemoryFollowsTheMeasuredModel) {
   EXPECT_DOUBLE_EQ(rendering.total_bytes(), b.simulation_bytes + 4 * rendering.povray_bytes);
 }
 
+TEST(Budget, POVRaysMemoryFollowsTheStreaksLevelOfDetail) {
+  // 160 bytes a drop in view were measured at the preview's streak threshold (0.01), ~550 with
+  // every streak kept (budget.h). An unset min_streak_coverage is the quality's own threshold:
+  // preview as measured, final (0.003) keeping more far streaks; 0 keeps them all.
+  const auto per_view_drop = [](double coverage, povgen::Quality quality) {
+    SceneToExport s = scene(50, 5);
+    s.look.min_streak_coverage = coverage;
+    s.look.quality = quality;
+    const Budget b = estimate_budget(s, {1, 1}, 1);
+    SceneToExport bare = s;
+    bare.sim.rain.rate_mm_per_h = 0.0;
+    const Budget none = estimate_budget(bare, {1, 1}, 1);
+    return (b.povray_bytes - none.povray_bytes) / b.drops_in_view;
+  };
+  EXPECT_NEAR(per_view_drop(-1.0, povgen::Quality::preview), 160.0, 1.0);
+  EXPECT_NEAR(per_view_drop(0.01, povgen::Quality::final), 160.0, 1.0);
+  EXPECT_NEAR(per_view_drop(-1.0, povgen::Quality::final), 160.0 * 0.01 / 0.003, 1.0);
+  EXPECT_NEAR(per_view_drop(0.0, povgen::Quality::preview), 600.0, 1.0);
+  EXPECT_NEAR(per_view_drop(0.1, povgen::Quality::preview), 16.0, 1.0);
+}
+
 TEST(Budget, CountsTheDropsSimulatedAroundTheLampsInView) {
   SceneToExport s = scene(5, 6);
   const Budget without = estimate_budget(s, {1, 1}, 0);
