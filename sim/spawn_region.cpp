@@ -44,6 +44,21 @@ SpawnRegion::SpawnRegion(const ViewVolume& view, double ground_y_m, double ceili
   m_b1 = b1 + extend(m_eb1);
 }
 
+double SpawnRegion::reachable_volume_m3(double fall_m_per_s) const {
+  // The reachable rectangle grows linearly with height, clipped to the box: its area is
+  // piecewise quadratic in y, and midpoints of 256 slices integrate it well within 0.1 %.
+  constexpr int kSlices = 256;
+  const double dy = (m_ceiling - m_ground) / kSlices;
+  double volume = 0.0;
+  for (int k = 0; k < kSlices; ++k) {
+    const double reach = (k + 0.5) * dy / fall_m_per_s;  // time to the ground, s
+    const double a = std::min(m_a1, m_ma1 + reach * m_ea1) - std::max(m_a0, m_ma0 - reach * m_ea0);
+    const double b = std::min(m_b1, m_mb1 + reach * m_eb1) - std::max(m_b0, m_mb0 - reach * m_eb0);
+    volume += std::max(0.0, a) * std::max(0.0, b) * dy;
+  }
+  return volume;
+}
+
 bool SpawnRegion::reaches_footprint(double a, double b, double y, double fall_m_per_s) const {
   const double reach = (y - m_ground) / fall_m_per_s;  // time to the ground, s
   return a >= m_ma0 - reach * m_ea0 && a <= m_ma1 + reach * m_ea1 && b >= m_mb0 - reach * m_eb0 &&

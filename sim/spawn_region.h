@@ -34,8 +34,12 @@ class SpawnRegion {
 
   /// Horizontal area drops are born over, m² (the extended rectangle).
   [[nodiscard]] double spawn_area_m2() const { return (m_a1 - m_a0) * (m_b1 - m_b0); }
-  /// Air volume simulated, m³.
+  /// Air volume of the box, m³.
   [[nodiscard]] double volume_m3() const { return spawn_area_m2() * (m_ceiling - m_ground); }
+  /// Of that box, the air from which a drop falling at fall_m_per_s can still reach the
+  /// footprint (reaches_footprint), m³: the volume such drops fill. In wind it is a wedge of the
+  /// box, about half of it for the slowest drops and less for faster ones.
+  [[nodiscard]] double reachable_volume_m3(double fall_m_per_s) const;
   /// The unextended footprint rectangle, where ground water is measured, m².
   [[nodiscard]] double measure_area_m2() const { return (m_ma1 - m_ma0) * (m_mb1 - m_mb0); }
   [[nodiscard]] bool in_measure_area(const glm::dvec3& p) const;

@@ -123,7 +123,15 @@ WorkEstimate World::estimate(const SimParams& params) {
       glm::dvec3{params.wind.velocity_m_per_s.x, 0.0, params.wind.velocity_m_per_s.z},
       wind_spread(params.wind), terminal_velocity(params.rain.diameter_min_mm * 1e-3));
   WorkEstimate e;
-  e.drops = sizes.number_density_per_m3() * region.volume_m3();
+  // The World fills the box but keeps only the drops that can reach the footprint (fill): in
+  // wind about half of them. Averaged over the sizes' quantiles, each falling at its own speed.
+  constexpr int kSizeQuantiles = 64;
+  double reachable_m3 = 0.0;
+  for (int k = 0; k < kSizeQuantiles; ++k) {
+    const double diameter = sizes.sample_in_air((k + 0.5) / kSizeQuantiles);
+    reachable_m3 += region.reachable_volume_m3(terminal_velocity(diameter)) / kSizeQuantiles;
+  }
+  e.drops = sizes.number_density_per_m3() * reachable_m3;
   e.drops_in_view = sizes.number_density_per_m3() * view.volume_m3();
   const double prewarm = params.prewarm_s < 0.0 ? default_prewarm(params) : params.prewarm_s;
   e.prewarm_steps = std::round(prewarm / params.substep_s);
