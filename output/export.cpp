@@ -96,7 +96,7 @@ bool export_frames(FolderState& folder, const SceneToExport& scene, FrameSpan ra
       lamp_rain.advance_to((n - 1) / look.fps);
       if (n < range.first) continue;
       sim::Frame frame = world.snapshot(n);
-      lamp_rain.add_drops(n, frame.drops);
+      lamp_rain.add_drops(frame.drops);
       const std::string name = frame_scene_name(Pass::image, n, digits);
       povgen::build_frame_values(frame, look, values, povgen::StreakAtlasLayout{}, threads);
       // Everything POV-Ray reads for this frame: the shared files (scene.inc, includes, atlas,

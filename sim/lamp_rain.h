@@ -40,15 +40,26 @@ class LampRain {
   /// their balls would hold whole, an upper bound of those drawn). Cheap.
   static WorkEstimate estimate(const SimParams& params);
 
+  /// For budgets (output/budget.h): which of the lamps' drops a frame draws depends on how far
+  /// and how large they are (povgen thins faint far streaks), which a sample measures. Here
+  /// `per_lamp` drops of the rain's sizes spread evenly through each lamp's ball, falling at
+  /// their terminal speed in the steady wind, those add_drops would keep; each stands for
+  /// `drops_per_sample` drops of the rain. Cheap, and the same for the same params.
+  struct Sample {
+    Drops drops;
+    double drops_per_sample = 0.0;
+  };
+  static Sample sample(const SimParams& params, int per_lamp);
+
   /// How many lamps take part.
   [[nodiscard]] std::size_t lamp_count() const { return m_lamps.size(); }
   /// Drops their Worlds hold, in view or not.
   [[nodiscard]] std::size_t simulated_drops() const;
   /// Advances every lamp's World (World::advance_to).
   void advance_to(double t_s);
-  /// Appends frame frame_index's drops of every lamp's ball to drops, in lamp order, each
-  /// World's in its own order.
-  void add_drops(int frame_index, Drops& drops) const;
+  /// Appends the drops now in every lamp's ball (in view, beyond far_m) to drops, in lamp
+  /// order, each World's in its own order.
+  void add_drops(Drops& drops) const;
 
  private:
   struct Lamp {
