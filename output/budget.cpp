@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "povgen/frame_values.h"
+#include "sim/frame.h"
 #include "sim/lamp_rain.h"
 #include "sim/world.h"
 
@@ -20,12 +21,15 @@ constexpr double kMiB = 1024.0 * 1024.0;
 constexpr double kGiB = 1024.0 * kMiB;
 
 // The measured model (budget.h), each term rounded up from what was measured.
-constexpr double kSimulationBase = 128 * kMiB;
+constexpr double kSimulationBase = 240 * kMiB;  // rendering: developing frames adds to export's
 constexpr double kSimulationPerDrop = 150.0;
-constexpr double kPovrayBase = 24 * kMiB;
-constexpr double kPovrayPerPixel = 24.0;  // POV-Ray's image buffers
+constexpr double kSimulationPerLampDrop = 120.0;  // a lamp's World: no merging, nothing copied
+constexpr double kPovrayBase = 56 * kMiB;         // the environment: meshes, textures, maps
+constexpr double kPovrayPerPixel = 64.0;          // POV-Ray's image buffers
 constexpr double kPovrayPerViewDropLod = 160.0;
-constexpr double kPovrayPerViewDropAll = 600.0;
+constexpr double kPovrayPerViewDropAll = 600.0;  // also a drawn drop's own
+/// Drops of each lamp's ball sampled to see how many of them a frame draws.
+constexpr int kLampSample = 4096;
 /// The simulation's speed on the reference machine, for telling users how long a run is.
 constexpr double kDropStepsPerSecond = 1e8;
 
@@ -54,6 +58,19 @@ std::string human_duration(double seconds) {
   return fmt::format("{:.2g} years", seconds / (365 * 86400.0));
 }
 
+/// How many of the lamps' drops a frame draws. They lie 15 m and more away, where most streaks
+/// fall below the coverage threshold and are thinned (povgen/frame_values.h): of a ball's
+/// drops a frame draws a few percent. A sample of them goes through povgen's own choice.
+double lamp_drops_drawn(const SceneToExport& scene) {
+  sim::LampRain::Sample sample = sim::LampRain::sample(scene.sim, kLampSample);
+  if (sample.drops.size() == 0) return 0.0;
+  sim::Frame frame;
+  frame.index = 1;
+  frame.drops = std::move(sample.drops);
+  const povgen::FrameValues values = povgen::build_frame_values(frame, scene.look);
+  return static_cast<double>(values.drops.size() + values.streaks.size()) * sample.drops_per_sample;
+}
+
 }  // namespace
 
 double default_max_memory_bytes() {
@@ -68,11 +85,14 @@ Budget estimate_budget(const SceneToExport& scene, FrameSpan range, int povray_p
   const sim::WorkEstimate work = sim::World::estimate(scene.sim);
   const sim::WorkEstimate lamps = sim::LampRain::estimate(scene.sim);
   Budget b;
+  b.lamp_drops = lamps.drops;
   b.drops = work.drops + lamps.drops;
-  b.drops_in_view = work.drops_in_view + lamps.drops_in_view;
+  b.lamp_drops_drawn = lamp_drops_drawn(scene);
+  b.drops_in_view = work.drops_in_view + b.lamp_drops_drawn;
   b.substeps = work.steps_until((range.last - 1) / scene.look.fps, scene.sim.substep_s);
   b.drop_steps = b.drops * b.substeps;
-  b.simulation_bytes = kSimulationBase + kSimulationPerDrop * b.drops;
+  b.simulation_bytes =
+      kSimulationBase + kSimulationPerDrop * work.drops + kSimulationPerLampDrop * lamps.drops;
   // Far streaks below the coverage threshold are thinned (povgen/frame_values.h): the lower it
   // is, the more are kept, up to all of them at 0. The model's 160 bytes were measured at the
   // preview's threshold, and a streak is kept with probability coverage / threshold, so a lower
@@ -85,7 +105,7 @@ Budget estimate_budget(const SceneToExport& scene, FrameSpan range, int povray_p
           : std::min(kPovrayPerViewDropAll, kPovrayPerViewDropLod * povgen::kPreviewStreakCoverage /
                                                 std::min(threshold, 1.0));
   b.povray_bytes = kPovrayBase + kPovrayPerPixel * scene.look.width * scene.look.height +
-                   per_view_drop * b.drops_in_view;
+                   per_view_drop * work.drops_in_view + kPovrayPerViewDropAll * b.lamp_drops_drawn;
   b.povray_processes = std::max(0, povray_processes);
   return b;
 }
@@ -112,11 +132,11 @@ void check_budget(const Budget& b, const BudgetLimits& limits) {
             : std::string{};
     throw BudgetExceeded(fmt::format(
         "this scene needs about {} of memory (simulation {} for {} drops{}), more than the "
-        "limit of {}: lower [rain] far_m or rate_mm_per_h{}, or raise the limit with "
+        "limit of {}: lower [rain] far_m or rate_mm_per_h{}{}, or raise the limit with "
         "--max-memory {:.0f}G",
         format_bytes(b.total_bytes()), format_bytes(b.simulation_bytes), human_count(b.drops),
-        povray, format_bytes(max_memory), b.povray_processes > 1 ? " (or --jobs)" : "",
-        std::ceil(b.total_bytes() * 1.25 / kGiB)));
+        povray, format_bytes(max_memory), b.lamp_drops > 0.0 ? " (or lamp_reach_m)" : "",
+        b.povray_processes > 1 ? " (or --jobs)" : "", std::ceil(b.total_bytes() * 1.25 / kGiB)));
   }
 }
 

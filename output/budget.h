@@ -3,14 +3,20 @@
 // past a limit stops before it creates a file, with a message naming the scene keys to change
 // and the option that raises the limit (--max-drop-steps, --max-memory).
 //
-// The memory model is measured, not derived (Debian 12, 2 cores; BENCHMARKS.md): raintrace's
-// peak RSS while exporting was 266 / 418 / 644 MB for 1.1 / 2.2 / 3.9 million simulated drops
-// (rate_mm_per_h = 500, far_m = 6 / 8 / 10), i.e. ~115 MB + 136 bytes per drop; POV-Ray's peak
-// was 46 / 88 / 141 MB for 0.27 / 0.65 / 1.05 million drops in view at the default streak level
-// of detail (~110–150 bytes per drop in view), and 163 MB for 0.27 million with every streak
-// kept (min_streak_coverage = 0: ~550 bytes). The estimate rounds these up: 160 bytes at the
-// preview's streak threshold, in inverse proportion to a lower one (final's keeps 3.3 times as
-// many far streaks), 600 with every streak kept.
+// The memory model is measured, not derived (Debian 12, 2 cores; BENCHMARKS.md, "Memory of one
+// run"). raintrace's peak RSS while exporting (rate_mm_per_h = 500, far_m = 6 / 8 / 10) was
+// 302 / 425 / 637 MiB for 1.1 / 2.2 / 3.9 million simulated drops, i.e. ~180 MiB + 126 bytes
+// a drop, and rendering (developing the frames) adds 40–90 MiB: 340 MiB at far_m = 6. A drop of
+// the rain around the lamps (sim/lamp_rain.h: no merging, no copy for a frame) takes 82 bytes
+// in its World, 111 in heavy_rain's render (2.85 million: 278 → 580 MiB).
+// POV-Ray's peak on a frame without rain was 43–52 MiB for the examples at 160×90, 99–107 MiB
+// at 1280×720 (~64 bytes a pixel), and each drop in view adds 110–150 bytes at the preview's
+// streak level of detail, ~500 for a drop drawn (every streak kept). The estimate rounds these
+// up: 240 MiB + 150 bytes a simulated drop (120 around the lamps); 56 MiB + 64 bytes a pixel +
+// 160 bytes a drop in view at the preview's streak threshold, in inverse proportion to a lower
+// one (final's keeps 3.3 times as many far streaks), 600 with every streak kept. Of the rain
+// around the lamps, 15 m and more away, povgen draws a few percent: a sample of it goes through
+// povgen's own choice (povgen::build_frame_values) and each drop drawn counts 600 bytes.
 #pragma once
 
 #include <optional>
@@ -23,8 +29,11 @@
 namespace raintrace::output {
 
 struct Budget {
-  double drops = 0.0;             ///< simulated drops at steady state
-  double drops_in_view = 0.0;     ///< of those, in the view frustum (what a frame writes)
+  double drops = 0.0;          ///< simulated drops at steady state
+  double lamp_drops = 0.0;     ///< of those, the rain around the lamps (sim/lamp_rain.h)
+  double drops_in_view = 0.0;  ///< of those, in the view frustum (what a frame writes)
+  /// Of drops_in_view, those of the rain around the lamps (sim/lamp_rain.h) that a frame draws.
+  double lamp_drops_drawn = 0.0;
   double substeps = 0.0;          ///< from the start of the prewarm to the last frame of the run
   double drop_steps = 0.0;        ///< drops × substeps: the simulation's work
   double simulation_bytes = 0.0;  ///< raintrace's own peak memory (simulation and export)

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "povgen/frame_values.h"
+#include "sim/frame.h"
 #include "sim/lamp_rain.h"
 
 namespace raintrace::output {
@@ -45,15 +47,23 @@ TEST(Budget, TheIssuesHeavyRainIsRefusedBeforeItStartsNamingTheKeys) {
 }
 
 TEST(Budget, MemoryFollowsTheMeasuredModel) {
-  // 1.1 million simulated drops measured 266 MB at its peak (budget.h): the estimate may round
-  // up, never below.
+  // 1.1 million simulated drops measured 340 MiB at raintrace's peak rendering, and a dry
+  // frame of night_street at 1280×720 107 MiB at POV-Ray's (budget.h, 2026-12-05): the
+  // estimate may round up, never below.
+  constexpr double kMiB = 1024.0 * 1024.0;
   const Budget b = estimate_budget(scene(500, 6), {1, 1}, 0);
   EXPECT_NEAR(b.drops, 1.1e6, 0.1e6);
-  EXPECT_GE(b.simulation_bytes, 266.0 * 1024 * 1024);
-  EXPECT_LE(b.simulation_bytes, 1.3 * 266.0 * 1024 * 1024);
+  EXPECT_GE(b.simulation_bytes, 340.0 * kMiB);
+  EXPECT_LE(b.simulation_bytes, 1.3 * 340.0 * kMiB);
   EXPECT_EQ(b.total_bytes(), b.simulation_bytes);  // export only: no POV-Ray
   const Budget rendering = estimate_budget(scene(500, 6), {1, 1}, 4);
   EXPECT_DOUBLE_EQ(rendering.total_bytes(), b.simulation_bytes + 4 * rendering.povray_bytes);
+  SceneToExport dry = scene(0, 6);
+  dry.look.width = 1280;
+  dry.look.height = 720;
+  const double povray = estimate_budget(dry, {1, 1}, 1).povray_bytes;
+  EXPECT_GE(povray, 107.0 * kMiB);
+  EXPECT_LE(povray, 1.3 * 107.0 * kMiB);
 }
 
 TEST(Budget, POVRaysMemoryFollowsTheStreaksLevelOfDetail) {
@@ -87,6 +97,38 @@ TEST(Budget, CountsTheDropsSimulatedAroundTheLampsInView) {
   EXPECT_GT(lamp_drops, 0.0);
   EXPECT_DOUBLE_EQ(with.drops, without.drops + lamp_drops);
   EXPECT_GT(with.simulation_bytes, without.simulation_bytes);
+  const std::string why = refusal(with, {.max_memory_bytes = 1e6});
+  EXPECT_NE(why.find("lower [rain] far_m or rate_mm_per_h (or lamp_reach_m)"), std::string::npos)
+      << why;
+  EXPECT_EQ(refusal(without, {.max_memory_bytes = 1e6}).find("lamp_reach_m"), std::string::npos);
+}
+
+TEST(Budget, CountsTheLampsDropsAFrameDrawsAsPovgenThinsThem) {
+  // The lamps' drops lie 15 m and more away, where povgen thins most far streaks: POV-Ray's
+  // memory follows the few it draws, not the ball's hundreds of thousands (budgeted until
+  // 2026-12-05, 2.5 GB for heavy_rain where POV-Ray peaked at 76 MB). The sampled estimate must
+  // match what a real frame of the lamps' rain draws.
+  SceneToExport s = scene(50, 5);
+  s.sim.lamps = {{1.0, 4.5, 18.0}};
+  s.sim.rain.lamp_reach_m = 3.0;
+  s.sim.threads = 2;
+  s.look.camera = s.sim.camera;
+  s.look.width = 640;
+  s.look.height = 360;
+  for (const povgen::Quality quality : {povgen::Quality::preview, povgen::Quality::final}) {
+    s.look.quality = quality;
+    const Budget b = estimate_budget(s, {1, 1}, 1);
+    sim::LampRain rain(s.sim);
+    sim::Frame frame;
+    frame.index = 1;
+    rain.add_drops(frame.drops);
+    const povgen::FrameValues values = povgen::build_frame_values(frame, s.look);
+    const auto drawn = static_cast<double>(values.drops.size() + values.streaks.size());
+    ASSERT_GT(drawn, 100.0);
+    EXPECT_NEAR(b.lamp_drops_drawn, drawn, 0.2 * drawn);
+    // A few percent of the drops the ball holds in view.
+    EXPECT_LT(drawn, 0.25 * static_cast<double>(frame.drops.size()));
+  }
 }
 
 TEST(Budget, AFrameRateOfAlmostNothingIsRefusedForItsWork) {
