@@ -27,7 +27,7 @@ constexpr double kSimulationPerLampDrop = 120.0;  // a lamp's World: no merging,
 constexpr double kPovrayBase = 56 * kMiB;         // the environment: meshes, textures, maps
 constexpr double kPovrayPerPixel = 64.0;          // POV-Ray's image buffers
 constexpr double kPovrayPerViewDropLod = 160.0;
-constexpr double kPovrayPerViewDropAll = 600.0;  // also a drawn drop's own
+constexpr double kPovrayPerViewDropAll = 600.0;  // every streak kept: a drop drawn
 /// Drops of each lamp's ball sampled to see how many of them a frame draws.
 constexpr int kLampSample = 4096;
 /// The simulation's speed on the reference machine, for telling users how long a run is.
