@@ -5,8 +5,10 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <numbers>
+#include <utility>
 
 #include "sim/drop_size.h"
+#include "sim/drop_state.h"
 #include "sim/random.h"
 #include "sim/terminal_velocity.h"
 
@@ -88,15 +90,9 @@ LampRain::LampRain(const SimParams& params, const std::atomic<bool>* cancel)
 
 WorkEstimate LampRain::estimate(const SimParams& params) {
   WorkEstimate sum;
-  const double reach = params.rain.lamp_reach_m;
-  const double ball_m3 = 4.0 / 3.0 * std::numbers::pi * reach * reach * reach;
   for (const LampWorld& lamp : lamp_worlds(params)) {
     const WorkEstimate one = World::estimate(lamp.params);
     sum.drops += one.drops;
-    // Of its frustum's drops, those in the ball (at most: part of it may lie out of view,
-    // before far_m or under the ground).
-    const ViewVolume frustum(lamp.params.camera, lamp.params.rain.near_m, lamp.params.rain.far_m);
-    sum.drops_in_view += one.drops_in_view * std::min(1.0, ball_m3 / frustum.volume_m3());
     sum.prewarm_steps = std::max(sum.prewarm_steps, one.prewarm_steps);
   }
   return sum;
@@ -112,11 +108,13 @@ LampRain::Sample LampRain::sample(const SimParams& params, int per_lamp) {
   sample.drops_per_sample = sizes.number_density_per_m3() * ball_m3 / per_lamp;
   const ViewVolume beyond = beyond_drawn_rain(params);
   const glm::dvec3 wind{params.wind.velocity_m_per_s.x, 0.0, params.wind.velocity_m_per_s.z};
+  DropState state;
   for (std::size_t k = 0; k < worlds.size(); ++k) {
     const std::uint64_t offset = (k + 1) * kIdStride;
     for (int i = 0; i < per_lamp; ++i) {
-      const std::uint64_t id = offset + static_cast<std::uint64_t>(i);
-      auto u = [&](int dim) { return uniform(params.seed, Stream::fill, id, dim); };
+      NewDrop drop;
+      drop.id = offset + static_cast<std::uint64_t>(i);
+      auto u = [&](int dim) { return uniform(params.seed, Stream::fill, drop.id, dim); };
       // Uniform in the ball: radius ∝ u^(1/3), direction uniform on the sphere.
       const double r = reach * std::cbrt(u(0));
       const double cos_theta = 2.0 * u(1) - 1.0;
@@ -126,18 +124,15 @@ LampRain::Sample LampRain::sample(const SimParams& params, int per_lamp) {
                                                              sin_theta * std::sin(phi)};
       if (!beyond.contains(p)) continue;
       const double diameter = sizes.sample_in_air(u(3));
-      const double fall = terminal_velocity(diameter);
-      sample.drops.id.push_back(id);
-      sample.drops.position.push_back(glm::vec3(p));
-      sample.drops.velocity.push_back(glm::vec3(wind.x, -fall, wind.z));
-      sample.drops.acceleration.push_back(glm::vec3(0.0f));
-      sample.drops.diameter.push_back(static_cast<float>(diameter));
-      sample.drops.age.push_back(0.0f);
-      sample.drops.vanishing_rate.push_back(static_cast<float>(params.rain.vanishing_rate_per_s));
-      sample.drops.opacity.push_back(1.0f);
-      sample.drops.colour.push_back(glm::vec3(params.rain.colour));
+      drop.position = glm::vec3(p);
+      drop.velocity = glm::vec3(wind.x, -terminal_velocity(diameter), wind.z);
+      drop.diameter = static_cast<float>(diameter);
+      drop.vanishing_rate = static_cast<float>(params.rain.vanishing_rate_per_s);
+      drop.colour = glm::vec3(params.rain.colour);
+      state.push(drop);
     }
   }
+  sample.drops = std::move(state.drops);
   return sample;
 }
 

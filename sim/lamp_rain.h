@@ -36,8 +36,8 @@ class LampRain {
   /// lamp_reach_m = 0 or no lamp: none. Throws std::invalid_argument like World for bad params.
   explicit LampRain(const SimParams& params, const std::atomic<bool>* cancel = nullptr);
 
-  /// What the lamps' Worlds simulate, summed (World::estimate of each; drops_in_view: the drops
-  /// their balls would hold whole, an upper bound of those drawn). Cheap.
+  /// What the lamps' Worlds simulate, summed (World::estimate of each). drops_in_view stays 0:
+  /// how many of their drops a frame draws is what sample() is for. Cheap.
   static WorkEstimate estimate(const SimParams& params);
 
   /// For budgets (output/budget.h): which of the lamps' drops a frame draws depends on how far
