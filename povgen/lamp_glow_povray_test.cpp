@@ -172,5 +172,81 @@ TEST(PovRayLampGlow, MistDiffractsAHaloAsWideAsItsDropletsMakeIt) {
   fs::remove_all(dir);
 }
 
+// A camera 1.45 m up, 30 m before a lens 5.88 m up, looking at it; the mist's drift held even;
+// `knobs` declared before the template.
+std::string lobes_scene(const std::string& knobs) {
+  return "#version 3.7;\n"
+         "global_settings { assumed_gamma 1 }\n"
+         "#declare RT_CameraPosition = <0, 1.45, -30>;\n"
+         "#declare RT_LightsOnly = 1;\n" +
+         knobs +
+         "#include \"night_street.inc\"\n"
+         "#undef RT_MistDrift\n"
+         "#declare RT_MistDrift = function { 0.5 }\n"
+         "camera { perspective location RT_CameraPosition look_at <0, 5.88, 0> right x up y "
+         "angle 20 }\n"
+         "RT_LampGlow(<0, 5.88, 0>, <1, 1, 1>)\n";
+}
+
+// Mean red light over `rows` × `columns` pixels from the image's centre (the lens), of `with`
+// less `without`.
+double glow_over(const std::vector<float>& with, const std::vector<float>& without, int row0,
+                 int row1, int column0, int column1) {
+  double sum = 0.0;
+  int n = 0;
+  for (int y = kGlowSize / 2 + row0; y <= kGlowSize / 2 + row1; ++y) {
+    for (int x = kGlowSize / 2 + column0; x <= kGlowSize / 2 + column1; ++x) {
+      const std::size_t i = 3 * (static_cast<std::size_t>(y) * kGlowSize + x);
+      sum += with[i] - without[i];
+      ++n;
+    }
+  }
+  return sum / n;
+}
+
+// Media fog scatters the lamps' light to the side itself, in the cones below them, and declares
+// RT_LampCones = 0: the glow is then the forward lobes alone. The sheet's light is the cones'
+// plus the lobes', so the glow without cones and the glow without lobes add up to the whole,
+// below the lens (0.5–1.2 m down, clear of the clip at the lens) and beside it; and with neither
+// nothing is drawn.
+TEST(PovRayLampGlow, WithoutItsConesTheGlowIsTheMistsForwardLobesAlone) {
+  SKIP_WITHOUT_POVRAY();
+  const fs::path dir = testing::folder_with_street("povray_test_lamp_lobes");
+  const std::string options = testing::square_size(kGlowSize) + " -A";
+  const std::string no_lobes = "#declare RT_AureoleShare = 0;\n#declare RT_DiffractionShare = 0;\n";
+  const std::string no_cones = "#declare RT_LampCones = 0;\n";
+  const auto render = [&](const std::string& name, const std::string& knobs) {
+    return testing::trace_linear(dir, name, lobes_scene(knobs), options);
+  };
+  const auto background = render("background", "#declare RT_LampHaze = 0;\n");
+  const auto whole = render("whole", "");
+  const auto lobes = render("lobes", no_cones);
+  const auto cones = render("cones", no_lobes);
+  const auto nothing = render("nothing", no_cones + no_lobes);
+  ASSERT_EQ(background.size(), 3u * kGlowSize * kGlowSize);
+  for (const auto* image : {&whole, &lobes, &cones, &nothing}) {
+    ASSERT_EQ(image->size(), background.size());
+  }
+  // 20° over 64 pixels at 30.3 m: 0.167 m a pixel. Below the lens: rows 3–7; beside it, level
+  // with it, 0.5–1.2 m to the right.
+  struct Region {
+    const char* name;
+    int row0, row1, column0, column1;
+  };
+  for (const Region& r : {Region{"below", 3, 7, -2, 2}, Region{"beside", -1, 1, 3, 7}}) {
+    const double w = glow_over(whole, background, r.row0, r.row1, r.column0, r.column1);
+    const double l = glow_over(lobes, background, r.row0, r.row1, r.column0, r.column1);
+    const double c = glow_over(cones, background, r.row0, r.row1, r.column0, r.column1);
+    const double n = glow_over(nothing, background, r.row0, r.row1, r.column0, r.column1);
+    std::printf("%s the lens: whole %.5f, lobes %.5f + cones %.5f, neither %.6f\n", r.name, w, l, c,
+                n);
+    EXPECT_GT(l, 0.1 * w) << r.name << ": no forward lobes without the cones";
+    EXPECT_GT(c, 0.1 * w) << r.name << ": no cones without the lobes";
+    EXPECT_NEAR((l + c) / w, 1.0, 0.02) << r.name;
+    EXPECT_LT(std::abs(n), 0.001 * w) << r.name;
+  }
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace raintrace::povgen

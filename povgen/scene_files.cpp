@@ -15,6 +15,9 @@
 namespace raintrace::povgen {
 namespace {
 
+// Of the media mist's extinction, the share its droplets scatter; the rest they absorb.
+constexpr double kMediaScatteringShare = 0.7;
+
 std::string fog_text(const FogParams& fog, const sim::Camera& camera) {
   std::string text;
   if (fog.mode == FogMode::off || fog.density_per_m <= 0.0) return text;
@@ -41,8 +44,8 @@ std::string fog_text(const FogParams& fog, const sim::Camera& camera) {
   // edge (heavy_fog, frame 16: mean error 0.057 against 32 samples, 0.0007 for these;
   // BENCHMARKS.md). The container's surface has no diffuse and no ambient: POV-Ray then skips its
   // light loop.
-  const double scattering = 0.7 * fog.density_per_m;
-  const double absorption = 0.3 * fog.density_per_m;
+  const double scattering = kMediaScatteringShare * fog.density_per_m;
+  const double absorption = (1.0 - kMediaScatteringShare) * fog.density_per_m;
   text += "sphere{" + format_vector(camera.position) + "," + format_number(fog.depth_m) +
           " hollow\n texture{pigment{rgbt 1} finish{ambient 0 diffuse 0}}\n"
           " interior{media{method 2 intervals 1 samples 8,8"
@@ -215,9 +218,15 @@ std::string scene_inc_text(const ExportParams& look) {
   text += "#if(RT_Mask)\nbackground{rgb 0}\n#else\n";
   text += "#declare RT_KeyLight=1;\n";
   if (look.fog.mode == FogMode::media && look.fog.density_per_m > 0.0) {
-    // Media mist scatters the lamps' light itself: night_street's painted lamp haze would count
-    // it twice.
-    text += "#declare RT_LampHaze=0;\n";
+    // Media mist scatters the lamps' light to the side itself, so night_street paints no cones.
+    // Its droplets' forward lobes (the aureole and the diffraction halo around each lamp) are
+    // too narrow for eight samples a ray to find: the environment paints those for the mist's
+    // scattering coefficient, tinted as the medium's. Without them, heavy_fog's lamps hung in
+    // the fog with no halo, and both blind viewers of a pair chose them painted.
+    const glm::dvec3 tint = glm::clamp(look.fog.colour, 0.0, 1.0);
+    const double scattering = kMediaScatteringShare * look.fog.density_per_m;
+    text += "#declare RT_LampHaze=" + format_number(scattering * (tint.x + tint.y + tint.z) / 3.0) +
+            ";\n#declare RT_LampCones=0;\n";
   }
   if (look.fog.mode == FogMode::ground && look.fog.density_per_m > 0.0) {
     // The environment's painted lamp haze is this mist where it stands around the lamps.

@@ -208,9 +208,12 @@ TEST(SceneFiles, FogModes) {
   EXPECT_TRUE(contains(media, "scattering{1,rgb 0.00875*"));
   EXPECT_TRUE(contains(media, " extinction 4}\n  absorption rgb 0.015"));
   EXPECT_TRUE(contains(media, "jitter 0"));
-  // Media mist scatters the lamps' light itself: the environment's painted lamp haze is off,
-  // declared before the environment reads it.
-  EXPECT_LT(media.find("#declare RT_LampHaze=0;"), media.find("#include \"environment.inc\""));
+  // Media mist scatters the lamps' light to the side itself: the environment paints no cones,
+  // only the droplets' forward lobes, for the medium's scattering tinted by its colour's mean
+  // (0.035 · 0.65), declared before the environment reads them.
+  const auto media_environment = media.find("#include \"environment.inc\"");
+  EXPECT_LT(media.find("#declare RT_LampHaze=0.02275;"), media_environment);
+  EXPECT_LT(media.find("#declare RT_LampCones=0;"), media_environment);
   EXPECT_FALSE(contains(media, "RT_GroundFogDensity"));
   look.fog.density_per_m = 0.0;
   EXPECT_FALSE(contains(scene_inc_text(look), "absorption rgb"));
