@@ -35,20 +35,26 @@ std::string glow_scene(const std::string& fog, bool glow) {
          (glow ? "RT_LampGlow(<0, 5.88, -100>, <1, 1, 1>)\n" : "") + "\n";
 }
 
-// Mean red light the glow adds over rows 0.5–1.2 m below the lens, across 0.4 m: the cone under
-// it, clear of the clip at 1 right at the lens.
-double glow_below_lens(const std::vector<float>& with, const std::vector<float>& without) {
-  // 20° over 64 pixels at 20 m: 0.110 m a pixel; the lens is at the middle row.
+// Mean red light of `with` less `without` over rows row0–row1 and columns column0–column1,
+// counted from the image's centre (where the lens is).
+double glow_over(const std::vector<float>& with, const std::vector<float>& without, int row0,
+                 int row1, int column0, int column1) {
   double sum = 0.0;
   int n = 0;
-  for (int y = kGlowSize / 2 + 5; y <= kGlowSize / 2 + 11; ++y) {
-    for (int x = kGlowSize / 2 - 2; x <= kGlowSize / 2 + 2; ++x) {
+  for (int y = kGlowSize / 2 + row0; y <= kGlowSize / 2 + row1; ++y) {
+    for (int x = kGlowSize / 2 + column0; x <= kGlowSize / 2 + column1; ++x) {
       const std::size_t i = 3 * (static_cast<std::size_t>(y) * kGlowSize + x);
       sum += with[i] - without[i];
       ++n;
     }
   }
   return sum / n;
+}
+
+// Mean red light the glow adds over rows 0.5–1.2 m below the lens, across 0.4 m: the cone under
+// it, clear of the clip at 1 right at the lens (20° over 64 pixels at 20 m: 0.110 m a pixel).
+double glow_below_lens(const std::vector<float>& with, const std::vector<float>& without) {
+  return glow_over(with, without, 5, 11, -2, 2);
 }
 
 TEST(PovRayLampGlow, TheGlowIsAsStrongAsTheMistAroundTheLamp) {
@@ -186,22 +192,6 @@ std::string lobes_scene(const std::string& knobs) {
          "camera { perspective location RT_CameraPosition look_at <0, 5.88, 0> right x up y "
          "angle 20 }\n"
          "RT_LampGlow(<0, 5.88, 0>, <1, 1, 1>)\n";
-}
-
-// Mean red light over `rows` × `columns` pixels from the image's centre (the lens), of `with`
-// less `without`.
-double glow_over(const std::vector<float>& with, const std::vector<float>& without, int row0,
-                 int row1, int column0, int column1) {
-  double sum = 0.0;
-  int n = 0;
-  for (int y = kGlowSize / 2 + row0; y <= kGlowSize / 2 + row1; ++y) {
-    for (int x = kGlowSize / 2 + column0; x <= kGlowSize / 2 + column1; ++x) {
-      const std::size_t i = 3 * (static_cast<std::size_t>(y) * kGlowSize + x);
-      sum += with[i] - without[i];
-      ++n;
-    }
-  }
-  return sum / n;
 }
 
 // Media fog scatters the lamps' light to the side itself, in the cones below them, and declares
