@@ -587,22 +587,22 @@ int isolated_glints(const Image& image, int x0, int x1, int y0, int y1, float by
 // its own tilt and the road glitters with single-pixel glints (blind viewers: "render noise");
 // resolved, the images break into patches a few pixels across. Over the road under the lamps'
 // images (x 200–440, y 200–359 of 640×360) the resolved ground must show under 0.45 of the
-// true scale's isolated glints, and fewer than 250. Measured: 200 resolved, 604 at the true
-// scale (0.33) since the relief is the stones' 8 mm at amount 0.2 (the final's antialiasing
-// threshold 0.2): it breaks a lamp's image into a column of small glints, which five of six
-// blind viewers chose over the 2 cm relief's smooth swells; 145 and 353 (0.41) at 2 cm and 0.1
-// since mirrors see each streetlight's lens blurred (RT_MirroredFlatLens: more of
-// the facets catch it, each fainter, which blind viewers chose over glints "like identical
-// stickers"); 110 and 266 (0.41) with the even copy of the lens; 99 and 305 while the rings were
-// 17 mm long (the rain's roughness at its true scale is a noise of half a ring's wavelength, so
-// the 31 mm rings made it coarser and it glitters less); 92 and 455 while the film mirrored only
-// half of what it reflects; on the template before (the aggregate was POV-Ray's granite normal
-// at its true scale), 143. The largest cluster of those left is on the puddles by the right
-// kerb, where the rings are drawn.
+// true scale's isolated glints, and fewer than 250. Measured: 191 resolved, 728 at the true
+// scale (0.26) since the final's antialiasing samples a pixel 2×2 at threshold 0.15; 200 and 604
+// (0.33) since the relief is the stones' 8 mm at amount 0.2 (antialiasing 3×3 at 0.2): it
+// breaks a lamp's image into a column of small glints, which five of six blind viewers chose
+// over the 2 cm relief's smooth swells; 145 and 353 (0.41) at 2 cm and 0.1 since mirrors see
+// each streetlight's lens blurred (RT_MirroredFlatLens: more of the facets catch it, each fainter,
+// which blind viewers chose over glints "like identical stickers"); 110 and 266 (0.41) with the
+// even copy of the lens; 99 and 305 while the rings were 17 mm long (the rain's roughness at its
+// true scale is a noise of half a ring's wavelength, so the 31 mm rings made it coarser and it
+// glitters less); 92 and 455 while the film mirrored only half of what it reflects; on the template
+// before (the aggregate was POV-Ray's granite normal at its true scale), 143. The largest cluster
+// of those left is on the puddles by the right kerb, where the rings are drawn.
 TEST(ExampleFigures, DefaultStreetRoadImagesBreakIntoPatchesNotGlints) {
   if (!have_povray()) GTEST_SKIP() << "povray is not installed";
   const auto [resolved, true_scale] = render_default_twice(
-      "default_glints", 640, "Declare=RT_Preview=0 +A0.2 +R3", "Declare=RT_NoiseSpans=0");
+      "default_glints", 640, "Declare=RT_Preview=0 +A0.15 +R2", "Declare=RT_NoiseSpans=0");
   ASSERT_EQ(resolved.width, 640);
   ASSERT_EQ(resolved.rgb.size(), true_scale.rgb.size());
   const int glints = isolated_glints(resolved, 200, 440, 200, 359, 0.02f);
