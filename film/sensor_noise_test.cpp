@@ -97,8 +97,8 @@ TEST(SensorNoise, LuminanceNoiseIsZeroMeanWithTheContractedRms) {
 // part and spread into blotches several pixels across, where the luminance part clumps over a
 // pixel only (pixel_noise.h: 8/18 across a side, 0 three apart). Unsmoothed the colour part
 // would be √2 times the luminance part and as fine. Measured on a 1920-wide frame: 0.197–0.199
-// of the luminance part, correlated 0.78 four pixels apart. Bounds: a fifth of the way to the
-// raw speckle above (0.45), something left of it below (0.1: the blotches of a real camera).
+// of the luminance part, correlated 0.78 four pixels apart. Bounds: under a third of the raw
+// speckle's √2 (0.45), and something left of it (0.1: the blotches of a real camera).
 TEST(SensorNoise, ColourNoiseIsSmoothedIntoFaintBlotches) {
   const float linear = 0.5f;
   const RgbImage image = noisy_flat(linear, 0.2, 1920);
