@@ -598,54 +598,6 @@ TEST(ExampleFigures, DefaultStreetWetPaintMirrorsMoreTowardGrazing) {
   EXPECT_LT(darker, 10) << "the film darkens the paint: Fresnel's law only adds reflection";
 }
 
-// How many pixels of the rectangle are isolated glints: brighter (linear luma) than each of
-// their four direct neighbours by half again and by more than `by`. (A streak of rain, one pixel
-// wide, is no brighter than the pixels above and below it.)
-int isolated_glints(const Image& image, int x0, int x1, int y0, int y1, float by) {
-  int count = 0;
-  for (int y = y0; y < y1; ++y) {
-    for (int x = x0; x < x1; ++x) {
-      const float brightest_neighbour = std::max(
-          {image.luma(x - 1, y), image.luma(x + 1, y), image.luma(x, y - 1), image.luma(x, y + 1)});
-      const float luma = image.luma(x, y);
-      if (luma > 1.5f * brightest_neighbour && luma > brightest_neighbour + by) ++count;
-    }
-  }
-  return count;
-}
-
-// default: frame 1 at final quality, antialiased as exported, with the wet ground's relief —
-// the asphalt's aggregate and the puddles' rain roughness — drawn no finer than the pixels
-// resolve (the ground include's RT_NoiseSpans 2, the default) and at its true scale
-// (RT_NoiseSpans 0). Finer than a pixel, each antialiasing sample of a lamp's mirror image gets
-// its own tilt and the road glitters with single-pixel glints (blind viewers: "render noise");
-// resolved, the images break into patches a few pixels across. Over the road under the lamps'
-// images (x 200–440, y 200–359 of 640×360) the resolved ground must show under 0.45 of the
-// true scale's isolated glints, and fewer than 250. Measured: 191 resolved, 728 at the true
-// scale (0.26) since the final's antialiasing samples a pixel 2×2 at threshold 0.15; 200 and 604
-// (0.33) since the relief is the stones' 8 mm at amount 0.2 (antialiasing 3×3 at 0.2): it
-// breaks a lamp's image into a column of small glints, which five of six blind viewers chose
-// over the 2 cm relief's smooth swells; 145 and 353 (0.41) at 2 cm and 0.1 since mirrors see
-// each streetlight's lens blurred (RT_MirroredFlatLens: more of the facets catch it, each fainter,
-// which blind viewers chose over glints "like identical stickers"); 110 and 266 (0.41) with the
-// even copy of the lens; 99 and 305 while the rings were 17 mm long (the rain's roughness at its
-// true scale is a noise of half a ring's wavelength, so the 31 mm rings made it coarser and it
-// glitters less); 92 and 455 while the film mirrored only half of what it reflects; on the template
-// before (the aggregate was POV-Ray's granite normal at its true scale), 143. The largest cluster
-// of those left is on the puddles by the right kerb, where the rings are drawn.
-TEST(ExampleFigures, DefaultStreetRoadImagesBreakIntoPatchesNotGlints) {
-  if (!have_povray()) GTEST_SKIP() << "povray is not installed";
-  const auto [resolved, true_scale] = render_default_twice(
-      "default_glints", 640, "Declare=RT_Preview=0 +A0.15 +R2", "Declare=RT_NoiseSpans=0");
-  ASSERT_EQ(resolved.width, 640);
-  ASSERT_EQ(resolved.rgb.size(), true_scale.rgb.size());
-  const int glints = isolated_glints(resolved, 200, 440, 200, 359, 0.02f);
-  const int glitter = isolated_glints(true_scale, 200, 440, 200, 359, 0.02f);
-  std::printf("isolated glints on the road: %d resolved, %d at the true scale\n", glints, glitter);
-  EXPECT_LT(glints, 0.45 * glitter) << "the resolved ground glitters like one drawn at true scale";
-  EXPECT_LT(glints, 250) << "the lamps' images on the road break into single-pixel glints";
-}
-
 // `raintrace export` of the default example with each line of its scene file that starts with
 // a key of `lines` replaced by that key's line, into DIR (the scene file beside it).
 void export_default_with(const std::vector<std::pair<std::string, std::string>>& lines,
@@ -668,6 +620,72 @@ void export_default_with(const std::vector<std::pair<std::string, std::string>>&
   const fs::path scene = dir.string() + ".toml";
   std::ofstream(scene) << changed.str();
   export_scene(scene, dir, frames);
+}
+
+// The antialiasing lines of a final-quality export's scene.ini (the default's), as POV-Ray
+// command-line options: what `raintrace render` traces a final frame with.
+std::string final_antialiasing_options() {
+  const fs::path dir = work_dir("final_ini");
+  export_default_with({{"quality =", "quality = \"final\""}}, dir, "1");
+  std::istringstream ini(read_text(dir / "scene.ini"));
+  std::string options;
+  for (std::string line; std::getline(ini, line);) {
+    for (const char* key : {"Antialias", "Sampling_Method", "Jitter"}) {
+      if (line.rfind(key, 0) == 0) options += " " + line;
+    }
+  }
+  fs::remove_all(dir);
+  return options;
+}
+
+// How many pixels of the rectangle are isolated glints: brighter (linear luma) than each of
+// their four direct neighbours by half again and by more than `by`. (A streak of rain, one pixel
+// wide, is no brighter than the pixels above and below it.)
+int isolated_glints(const Image& image, int x0, int x1, int y0, int y1, float by) {
+  int count = 0;
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) {
+      const float brightest_neighbour = std::max(
+          {image.luma(x - 1, y), image.luma(x + 1, y), image.luma(x, y - 1), image.luma(x, y + 1)});
+      const float luma = image.luma(x, y);
+      if (luma > 1.5f * brightest_neighbour && luma > brightest_neighbour + by) ++count;
+    }
+  }
+  return count;
+}
+
+// default: frame 1 at final quality, antialiased as a final export is, with the wet ground's relief
+// — the asphalt's aggregate and the puddles' rain roughness — drawn no finer than the pixels
+// resolve (the ground include's RT_NoiseSpans 2, the default) and at its true scale
+// (RT_NoiseSpans 0). Finer than a pixel, each antialiasing sample of a lamp's mirror image gets
+// its own tilt and the road glitters with single-pixel glints (blind viewers: "render noise");
+// resolved, the images break into patches a few pixels across. Over the road under the lamps'
+// images (x 200–440, y 200–359 of 640×360) the resolved ground must show under 0.45 of the
+// true scale's isolated glints, and fewer than 250. Measured: 191 resolved, 728 at the true
+// scale (0.26) since the final's antialiasing samples a pixel 2×2 at threshold 0.15; 200 and 604
+// (0.33) since the relief is the stones' 8 mm at amount 0.2 (antialiasing 3×3 at 0.2): it
+// breaks a lamp's image into a column of small glints, which five of six blind viewers chose
+// over the 2 cm relief's smooth swells; 145 and 353 (0.41) at 2 cm and 0.1 since mirrors see
+// each streetlight's lens blurred (RT_MirroredFlatLens: more of the facets catch it, each fainter,
+// which blind viewers chose over glints "like identical stickers"); 110 and 266 (0.41) with the
+// even copy of the lens; 99 and 305 while the rings were 17 mm long (the rain's roughness at its
+// true scale is a noise of half a ring's wavelength, so the 31 mm rings made it coarser and it
+// glitters less); 92 and 455 while the film mirrored only half of what it reflects; on the template
+// before (the aggregate was POV-Ray's granite normal at its true scale), 143. The largest cluster
+// of those left is on the puddles by the right kerb, where the rings are drawn.
+TEST(ExampleFigures, DefaultStreetRoadImagesBreakIntoPatchesNotGlints) {
+  if (!have_povray()) GTEST_SKIP() << "povray is not installed";
+  const std::string antialiasing = final_antialiasing_options();
+  ASSERT_NE(antialiasing.find("Antialias=on"), std::string::npos) << antialiasing;
+  const auto [resolved, true_scale] = render_default_twice(
+      "default_glints", 640, "Declare=RT_Preview=0" + antialiasing, "Declare=RT_NoiseSpans=0");
+  ASSERT_EQ(resolved.width, 640);
+  ASSERT_EQ(resolved.rgb.size(), true_scale.rgb.size());
+  const int glints = isolated_glints(resolved, 200, 440, 200, 359, 0.02f);
+  const int glitter = isolated_glints(true_scale, 200, 440, 200, 359, 0.02f);
+  std::printf("isolated glints on the road: %d resolved, %d at the true scale\n", glints, glitter);
+  EXPECT_LT(glints, 0.45 * glitter) << "the resolved ground glitters like one drawn at true scale";
+  EXPECT_LT(glints, 250) << "the lamps' images on the road break into single-pixel glints";
 }
 
 // Fine vertical structure in a rectangle: the mean of |L(x) − (L(x − 1) + L(x + 1))/2| along
