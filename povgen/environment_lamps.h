@@ -15,15 +15,15 @@ namespace raintrace::povgen {
 /// environments.
 inline std::vector<glm::dvec3> environment_lamps(std::string_view environment_name) {
   // templates/night_street.inc: RT_StreetLight(Z, Side, …) puts the lens at
-  // <Side·(RT_KerbX − 1.3), RT_LampHeight − 0.12, Z>, with RT_KerbX = 4 and RT_LampHeight = 6.
+  // <Side·(RT_KerbX − 1.4), RT_LampHeight − 0.07, Z>, with RT_KerbX = 4 and RT_LampHeight = 6.
   struct StreetLight {
     double z;
     int side;
   };
   constexpr std::array<StreetLight, 7> kNightStreetLights{
       {{5, 1}, {16, -1}, {28, 1}, {40, -1}, {52, 1}, {88, -1}, {112, 1}}};
-  constexpr double kLensX = 4.0 - 1.3;
-  constexpr double kLensY = 6.0 - 0.12;
+  constexpr double kLensX = 4.0 - 1.4;
+  constexpr double kLensY = 6.0 - 0.07;
   std::vector<glm::dvec3> lenses;
   if (environment_name != "night_street") return lenses;
   for (const StreetLight& light : kNightStreetLights) {

@@ -27,7 +27,7 @@ TEST(EnvironmentLamps, NightStreetsTableIsWhereTheTemplateDrawsItsLights) {
   const double kerb = declared(text, "RT_KerbX");
   const double height = declared(text, "RT_LampHeight");
   // The lens as RT_StreetLight places it.
-  ASSERT_NE(text.find("#local Lens = <Side * (RT_KerbX - 1.3), RT_LampHeight - 0.12, Z>;"),
+  ASSERT_NE(text.find("#local Lens = <Side * (RT_KerbX - 1.4), RT_LampHeight - 0.07, Z>;"),
             std::string::npos);
   std::vector<glm::dvec3> drawn;
   const std::regex call(R"(\nRT_StreetLight\((-?[0-9.]+), (-?1), )");
@@ -35,7 +35,7 @@ TEST(EnvironmentLamps, NightStreetsTableIsWhereTheTemplateDrawsItsLights) {
        ++it) {
     const double z = std::stod((*it)[1].str());
     const double side = std::stod((*it)[2].str());
-    drawn.emplace_back(side * (kerb - 1.3), height - 0.12, z);
+    drawn.emplace_back(side * (kerb - 1.4), height - 0.07, z);
   }
   const std::vector<glm::dvec3> table = environment_lamps("night_street");
   ASSERT_EQ(table.size(), drawn.size());
