@@ -14,7 +14,7 @@ namespace raintrace::povgen {
 /// The lenses of the environment's street lights (m): night_street's seven; none for the other
 /// environments.
 inline std::vector<glm::dvec3> environment_lamps(std::string_view environment_name) {
-  // templates/night_street.inc: RT_StreetLight(Z, Side, …) puts the lens at
+  // templates/night_street/streetlights.inc: RT_StreetLight(Z, Side, …) puts the lens at
   // <Side·(RT_KerbX − 1.4), RT_LampHeight − 0.07, Z>, with RT_KerbX = 4 and RT_LampHeight = 6.
   struct StreetLight {
     double z;

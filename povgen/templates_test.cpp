@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -33,14 +34,45 @@ class UserInclude : public ::testing::Test {
   fs::path m_root;
 };
 
+// A template file with each line `#include "DIR/NAME.inc"` (a part of it, a path under
+// templates/) replaced by that file's text, as povgen/CMakeLists.txt embeds it. (The files end
+// their last line with a newline.)
+std::string template_with_parts(const std::string& file_name) {
+  const fs::path dir{RAINTRACE_TEMPLATES_DIR};
+  std::istringstream lines(read_file_bytes(dir / file_name));
+  const std::string include = "#include \"";
+  std::string whole;
+  for (std::string line; std::getline(lines, line);) {
+    const bool is_part = line.starts_with(include) && line.find('/') != std::string::npos;
+    whole +=
+        is_part
+            ? read_file_bytes(dir / line.substr(include.size(), line.size() - include.size() - 1))
+            : line + "\n";
+  }
+  return whole;
+}
+
 TEST(Templates, BuiltinsAreEmbeddedAndMatchTheSourceFiles) {
   for (const std::string& name : builtin_environments()) {
-    const std::string file = read_file_bytes(fs::path{RAINTRACE_TEMPLATES_DIR} / (name + ".inc"));
-    EXPECT_EQ(environment_template(name), file) << name << ": re-run CMake after editing";
+    EXPECT_EQ(environment_template(name), template_with_parts(name + ".inc"))
+        << name << ": re-run CMake after editing";
   }
   EXPECT_EQ(materials_template(),
             read_file_bytes(fs::path{RAINTRACE_TEMPLATES_DIR} / "raintrace_materials.inc"));
   EXPECT_NE(materials_template().find("#declare RT_DropMaterial"), std::string::npos);
+}
+
+TEST(Templates, NightStreetIsOneFileWithItsPartsInPlace) {
+  // The output folder's environment.inc must render with POV-Ray alone: no include of a part
+  // may be left for POV-Ray to look for, and each part's text is in it.
+  const std::string& text = environment_template("night_street");
+  EXPECT_EQ(text.find("#include \"night_street/"), std::string::npos);
+  for (const auto& part :
+       fs::directory_iterator(fs::path{RAINTRACE_TEMPLATES_DIR} / "night_street")) {
+    EXPECT_NE(text.find(read_file_bytes(part.path())), std::string::npos) << part.path();
+  }
+  EXPECT_NE(text.find("#macro RT_StreetLight("), std::string::npos);
+  EXPECT_NE(text.find("#macro RT_TrafficSignal("), std::string::npos);
 }
 
 TEST(Templates, NoSpotlightIsShadowless) {

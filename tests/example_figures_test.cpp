@@ -291,10 +291,10 @@ TEST(ExampleFigures, CloseupDropFillsTheFrameAndTurnsTheSceneUpsideDown) {
 // road nearer than any lamp, where the glow sheets stand: it can only show the haze in its
 // mirror — puddles, the wet road's film. Linear 16-bit PNG, so the means are light. Before the
 // glow was mirrored the two renders were equal there to the last bit; measured now: 7.2 %
-// brighter (mirrors see the glow's core, templates/night_street.inc RT_LampGlow), the haze
-// 0.0069 /m, the default's fog at the lamps' height; 12.0 % in 0.014 /m; 8.2 % while the road's
-// film mirrored only half of what it reflects; 6.3 % before the droplets' diffraction halo; 2.4 %
-// with haze 0.01 in a fog that stayed near the ground, 5.3 % with 0.02 in it.
+// brighter (mirrors see the glow's core, RT_LampGlow in templates/night_street/streetlights.inc),
+// the haze 0.0069 /m, the default's fog at the lamps' height; 12.0 % in 0.014 /m; 8.2 % while the
+// road's film mirrored only half of what it reflects; 6.3 % before the droplets' diffraction
+// halo; 2.4 % with haze 0.01 in a fog that stayed near the ground, 5.3 % with 0.02 in it.
 TEST(ExampleFigures, DefaultStreetMirrorsTheLampsHazeInTheWetRoad) {
   if (!have_povray()) GTEST_SKIP() << "povray is not installed";
   const auto [haze, clear] = render_default_twice("default", 320, "", "Declare=RT_LampHaze=0");
