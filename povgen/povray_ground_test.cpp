@@ -475,6 +475,59 @@ TEST(PovRayGround, ShorelinesAreRaggedWithinTheirBandAndExactBeyondIt) {
   fs::remove_all(dir);
 }
 
+/// Puddles whose water rises and falls by 2 mm in gentle swells (slopes under 0.6 %) that cross
+/// its level along lines a metre apart, over a black ground, under a sky whose brightness grows
+/// with the height of the direction: the water mirrors a smoothly changing sky everywhere.
+constexpr const char* kSwellsUnderLinearSky = R"(
+#undef RT_PuddleHeight
+#declare RT_PuddleHeight = function(x, y, z) { 0.002 * sin(3 * x) * sin(3 * z) }
+#declare Dry = texture { pigment { rgb 0 } finish { ambient 0 diffuse 0 } }
+plane { y, 0
+  texture { RT_WetGround(Dry) }
+  interior { ior 1.33 }
+}
+sky_sphere { pigment { gradient y color_map { [0 rgb 0] [1 rgb 10] } } }
+)";
+
+// The water's normal is a pattern normal of its height, and POV-Ray wraps a pattern's value into
+// 0..1: heights a hair below the water's level read as ~1. Until 2026-12-05 the normal took the
+// heights as they are, so wherever its samples straddled the level it tilted wildly, and every
+// zero contour of the height field was a line of false glints and black specks. A pixel is a
+// speck here if it differs by more than a quarter from both its neighbours in the row; smooth
+// swells give none.
+TEST(PovRayGround, TheWaterLevelIsNoEdge) {
+  SKIP_WITHOUT_POVRAY();
+  const ExportParams look = calm_puddles(320, 0.9, 3.0);
+  const sim::PuddleField field(look.ground.puddles, look.ground.puddles.seed);
+  const fs::path dir = still_folder("level", look, kSwellsUnderLinearSky);
+  const auto image = render_still(dir);
+  ASSERT_EQ(image.size(), static_cast<std::size_t>(3 * look.width * look.height));
+  const GroundPixels pixels(look.camera, look.width, look.height, 0.0);
+  int water = 0, specks = 0;
+  for (int j = 0; j < look.height; ++j) {
+    for (int i = 1; i + 1 < look.width; ++i) {
+      const std::size_t p = static_cast<std::size_t>(j) * look.width + i;
+      if (!pixels.hits(p) || pixels.z(p) > 15.0) continue;
+      if (field.share(pixels.x(p), pixels.z(p)) < 1.0 ||
+          field.share(pixels.x(p - 1), pixels.z(p - 1)) < 1.0 ||
+          field.share(pixels.x(p + 1), pixels.z(p + 1)) < 1.0) {
+        continue;
+      }
+      const float here = image[3 * p + 1];
+      const float left = image[3 * (p - 1) + 1], right = image[3 * (p + 1) + 1];
+      const auto apart = [here](float other) {
+        return std::abs(here - other) > 0.25f * std::max(here, other);
+      };
+      ++water;
+      specks += apart(left) && apart(right) ? 1 : 0;
+    }
+  }
+  std::printf("%d specks in %d pixels of water\n", specks, water);
+  ASSERT_GT(water, 5000);
+  EXPECT_EQ(specks, 0) << "the water's normal breaks where its height crosses 0";
+  fs::remove_all(dir);
+}
+
 TEST(PovRayGround, SplashesGoOnPastTheSimulatedVolumeWithoutAnEdge) {
   SKIP_WITHOUT_POVRAY();
   // Heavy rain simulated to far_m = 6 m only, the camera looking down the street; the rain mask
