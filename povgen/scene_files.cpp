@@ -64,18 +64,34 @@ std::string fog_text(const FogParams& fog, const sim::Camera& camera) {
 // counts. Final quality stops at a variance of 1/8000 (up to 256 samples): at 1/2000 (up to
 // 128) the closeup's blurred street was salted with dark specks, a render's tell (mean
 // |pixel − its 5×5 mean| 5.9 % of the level, 3.3 % now, for 2.1× the frame's CPU; BENCHMARKS.md,
-// "Focal blur"). The variance is absolute, so in the dark a pixel stopped at the least number
-// of samples; with only 16 the same pattern of 16 rays in every pixel drew the blurred
-// background as 16 overlaid copies, blotches with jagged edges (blind viewers of the closeup:
-// "blotchy patches top left"). At least 32: the blotches go, their error after a 9×9 blur
-// falls from 1.5 % to 1.0 % of the level against 128 (BENCHMARKS.md, "Focal blur's least
-// samples"). Preview takes fewer: grainier discs, the same picture.
+// "Focal blur"). Preview takes fewer: grainier discs, the same picture (at least 8: POV-Ray's
+// hexagonal grid, below, began with 7 rays; the pigment's sequence adds 4 at a time).
+//
+// Every pixel shoots its rays through the same points of the lens, so the blurred picture is that
+// many sharp copies of the scene laid over each other, and what falls between the copies is
+// lost. Without a `bokeh` pigment POV-Ray takes its first 37 points from a hexagonal grid, whose
+// rows are level: a thin bright line out of focus came out as a stack of horizontal dashes, the
+// closeup's "glitchy noise band" at the roof's far edge, where the lamps' reflections are
+// squeezed into slivers. The bokeh pigment, the lens's round opening, makes POV-Ray draw the
+// points from a sub-random sequence instead, each at its own height, for the same CPU. And a
+// pixel whose first samples all miss a faint sliver stops there, black, as if the sliver were
+// not there. A line 1 pixel thin, 51 pixels out of focus, kept 48 % of its light with a third
+// of its middle rows dark on the grid at 32 samples, 60 % and one row dark with the pigment, and
+// 83 % and none at 64 (`PovRayFocalBlur.AThinLineOutOfFocusSpreadsOverTheOpeningAndKeepsItsLight`),
+// for 1.26× the closeup's CPU (BENCHMARKS.md, "Focal blur's rows of dashes"). At 16 the copies
+// showed as blotches with jagged edges even without slivers (BENCHMARKS.md, "Focal blur's least
+// samples").
 std::string focal_blur_text(const ExportParams& look) {
   if (!traces_focal_blur(look)) return {};
   const bool preview = look.quality == Quality::preview;
   return " aperture " + format_number(2.0 * look.aperture_m) + " blur_samples " +
-         (preview ? "4,16" : "32,256") + " focal_point " + format_vector(look.camera.look_at) +
-         " confidence 0.95 variance " + (preview ? "1/2000" : "1/8000");
+         (preview ? "8,16" : "64,256") + " focal_point " + format_vector(look.camera.look_at) +
+         " confidence 0.95 variance " + (preview ? "1/2000" : "1/8000") +
+         // The pigment on the unit square: 1 inside the disc of radius 0.5 around its centre. Not
+         // a function pattern: with one, POV-Ray 3.7.0.10 crashes on exit (signal 11) after
+         // writing the picture.
+         " bokeh{pigment{cylindrical rotate 90*x scale 0.5 translate <0.5,0.5,0>"
+         " color_map{[0 rgb 0][0.001 rgb 1]}}}";
 }
 
 // The environment plate in scene.inc: decides per frame whether to draw it, then includes the

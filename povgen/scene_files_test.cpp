@@ -87,12 +87,12 @@ TEST(SceneFiles, ApertureFocusesOnLookAtAndReplacesAntialiasing) {
   look.aperture_m = 0.004;
   const std::string inc = scene_inc_text(look);
   // POV-Ray's aperture value is twice the lens opening it blurs as (see focal_blur_text).
-  EXPECT_TRUE(contains(inc, " aperture 0.008 blur_samples 32,256 focal_point <0,0.5,2> "));
-  EXPECT_TRUE(contains(inc, " confidence 0.95 variance 1/8000"));
+  EXPECT_TRUE(contains(inc, " aperture 0.008 blur_samples 64,256 focal_point <0,0.5,2> "));
+  EXPECT_TRUE(contains(inc, " confidence 0.95 variance 1/8000 bokeh{pigment{"));
   // Focal blur samples each pixel many times: no antialiasing on top.
   EXPECT_TRUE(contains(ini_text(look, 1, "frame", "scene.pov", {1, 1}), "\nAntialias=off\n"));
   look.quality = Quality::preview;
-  EXPECT_TRUE(contains(scene_inc_text(look), " blur_samples 4,16 "));
+  EXPECT_TRUE(contains(scene_inc_text(look), " blur_samples 8,16 "));
   EXPECT_TRUE(contains(scene_inc_text(look), " variance 1/2000"));
   // Blurring the rain alone is povgen's (frame_values.h): POV-Ray's camera stays a pinhole.
   look.focal_blur = FocalBlur::rain;
