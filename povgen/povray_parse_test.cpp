@@ -262,6 +262,25 @@ TEST(PovRayDeterminism, SameFrameSamePixelsWithOneOrTwoThreads) {
   fs::remove_all(dir);
 }
 
+// The start of a scene seen by the camera raintrace writes for a 200×200 picture from the
+// origin along +z, 20° across, through a lens `aperture_m` wide focused 1 m away: its scene.inc
+// camera line alone.
+std::string scene_focused_at_one_metre(double aperture_m) {
+  ExportParams look;
+  look.width = look.height = 200;
+  look.quality = Quality::final;
+  look.camera.position = {0.0, 0.0, 0.0};
+  look.camera.look_at = {0.0, 0.0, 1.0};
+  look.camera.fov_deg = 20.0;
+  look.aperture_m = aperture_m;
+  const std::string inc = scene_inc_text(look);
+  const std::size_t camera = inc.find("camera{");
+  EXPECT_NE(camera, std::string::npos);
+  if (camera == std::string::npos) return {};
+  return "#version 3.7;\nglobal_settings{assumed_gamma 1}\n" +
+         inc.substr(camera, inc.find('\n', camera) - camera) + "\n";
+}
+
 // [camera] aperture_m is the lens opening: a sharp edge 10 m away, seen by a camera focused at
 // 1 m, blurs over a disc D = aperture_m · (10 − 1)/10 across at the plane of focus (thin-lens
 // geometry). Measured in linear light (EXR) from where the bright side starts to dim (< 0.98) to
@@ -269,24 +288,13 @@ TEST(PovRayDeterminism, SameFrameSamePixelsWithOneOrTwoThreads) {
 // area when the slice is 0.895 of its radius from the centre, so those points lie 0.895·D apart.
 TEST(PovRayFocalBlur, AnEdgeBehindTheFocusBlursOverTheLensOpening) {
   SKIP_WITHOUT_POVRAY();
-  ExportParams look;
-  look.width = look.height = 200;
-  look.quality = Quality::final;
-  look.camera.position = {0.0, 0.0, 0.0};
-  look.camera.look_at = {0.0, 0.0, 1.0};
-  look.camera.fov_deg = 20.0;
-  look.aperture_m = 0.04;
-  const std::string inc = scene_inc_text(look);
-  const std::size_t camera = inc.find("camera{");
-  ASSERT_NE(camera, std::string::npos);
+  const double aperture_m = 0.04;
   const fs::path dir = testing::scratch_folder("povray_test_focal_blur");
   fs::remove_all(dir);
   fs::create_directories(dir);
-  write_file_atomic(dir / "edge.pov",
-                    "#version 3.7;\nglobal_settings{assumed_gamma 1}\n" +
-                        inc.substr(camera, inc.find('\n', camera) - camera) +
-                        "\nplane{-z,-10 pigment{function{x<0}} finish{ambient 0 diffuse 0 "
-                        "emission 1}}\n");
+  write_file_atomic(dir / "edge.pov", scene_focused_at_one_metre(aperture_m) +
+                                          "plane{-z,-10 pigment{function{x<0}} finish{ambient 0 "
+                                          "diffuse 0 emission 1}}\n");
   ASSERT_EQ(run_povray(dir, "edge.pov +W200 +H200 -A +FE +Oedge.exr"), 0) << log_of(dir);
   const auto px = read_rgb(dir / "edge.exr");
   ASSERT_EQ(px.size(), 200u * 200u * 3u);
@@ -302,7 +310,8 @@ TEST(PovRayFocalBlur, AnEdgeBehindTheFocusBlursOverTheLensOpening) {
   const double pixel = 2.0 * std::tan(10.0 * M_PI / 180.0) / 200.0;
   const double spread = (last_lit - first_dim + 1) * pixel;
   // ±10 %: a pixel at each end is 5 % of the ~18 pixels, the rest focal-blur grain.
-  EXPECT_NEAR(spread, 0.895 * 0.04 * 0.9, 0.1 * 0.895 * 0.04 * 0.9) << "edge spread " << spread;
+  EXPECT_NEAR(spread, 0.895 * aperture_m * 0.9, 0.1 * 0.895 * aperture_m * 0.9)
+      << "edge spread " << spread;
   fs::remove_all(dir);
 }
 
@@ -315,16 +324,7 @@ TEST(PovRayFocalBlur, AnEdgeBehindTheFocusBlursOverTheLensOpening) {
 // dark and 60 %; with 64, none dark and 83 %.
 TEST(PovRayFocalBlur, AThinLineOutOfFocusSpreadsOverTheOpeningAndKeepsItsLight) {
   SKIP_WITHOUT_POVRAY();
-  ExportParams look;
-  look.width = look.height = 200;
-  look.quality = Quality::final;
-  look.camera.position = {0.0, 0.0, 0.0};
-  look.camera.look_at = {0.0, 0.0, 1.0};
-  look.camera.fov_deg = 20.0;
-  look.aperture_m = 0.1;
-  const std::string inc = scene_inc_text(look);
-  const std::size_t camera = inc.find("camera{");
-  ASSERT_NE(camera, std::string::npos);
+  const double aperture_m = 0.1;
   const fs::path dir = testing::scratch_folder("povray_test_focal_blur_line");
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -332,9 +332,8 @@ TEST(PovRayFocalBlur, AThinLineOutOfFocusSpreadsOverTheOpeningAndKeepsItsLight) 
   const double line_m = 0.02;
   const auto px = testing::trace_linear(
       dir, "line",
-      "#version 3.7;\nglobal_settings{assumed_gamma 1}\n" +
-          inc.substr(camera, inc.find('\n', camera) - camera) +
-          "\nbox{<-1,-0.01,10>,<1,0.01,10.01> pigment{rgb 1} finish{ambient 0 diffuse 0 "
+      scene_focused_at_one_metre(aperture_m) +
+          "box{<-1,-0.01,10>,<1,0.01,10.01> pigment{rgb 1} finish{ambient 0 diffuse 0 "
           "emission 1}}\n",
       "+W200 +H200 -A");
   ASSERT_EQ(px.size(), 200u * 200u * 3u);
@@ -352,7 +351,7 @@ TEST(PovRayFocalBlur, AThinLineOutOfFocusSpreadsOverTheOpeningAndKeepsItsLight) 
   // The opening's disc at the plane of focus: aperture_m · (10 − 1)/10, over pixels of
   // 2·tan(10°)/200 m.
   const double pixel = 2.0 * std::tan(10.0 * M_PI / 180.0) / 200.0;
-  const double disc_px = look.aperture_m * 0.9 / pixel;
+  const double disc_px = aperture_m * 0.9 / pixel;
   EXPECT_NEAR(last - first + 1, disc_px, 0.1 * disc_px) << "rows lit " << first << "–" << last;
   // The middle 70 % of the lit rows, where the disc's chords are long: none of them dark.
   const int margin = static_cast<int>(0.15 * (last - first + 1));
