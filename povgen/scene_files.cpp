@@ -78,7 +78,7 @@ std::string fog_text(const FogParams& fog, const sim::Camera& camera) {
 // not there. A line 1 pixel thin, 51 pixels out of focus, kept 48 % of its light with a third
 // of its middle rows dark on the grid at 32 samples, 60 % and one row dark with the pigment, and
 // 83 % and none at 64 (`PovRayFocalBlur.AThinLineOutOfFocusSpreadsOverTheOpeningAndKeepsItsLight`),
-// for 1.26× the closeup's CPU (BENCHMARKS.md, "Focal blur's rows of dashes"). At 16 the copies
+// for 1.27× the closeup's CPU (BENCHMARKS.md, "Focal blur's rows of dashes"). At 16 the copies
 // showed as blotches with jagged edges even without slivers (BENCHMARKS.md, "Focal blur's least
 // samples").
 std::string focal_blur_text(const ExportParams& look) {
