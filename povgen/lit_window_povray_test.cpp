@@ -73,10 +73,7 @@ double sum(const std::vector<float>& red) {
 // radiance. The dark window sends none.
 TEST(PovRayLitWindow, SeenAlongTheStreetItsRevealShinesWithTheRoomsLight) {
   SKIP_WITHOUT_POVRAY();
-  const fs::path dir = testing::scratch_folder("povray_test_lit_window");
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  write_file_atomic(dir / "night_street.inc", environment_template("night_street"));
+  const fs::path dir = testing::folder_with_street("povray_test_lit_window");
 
   // Square on: the opening covers 1.3 × 1.75 m of the 3.5 m picture.
   const double metres_per_pixel =
