@@ -90,9 +90,10 @@ TEST(PovRayStreetRoofs, TheTerracesSkylineHasChimneyStacks) {
   fs::remove_all(dir);
 }
 
-// The roof macro on its own, twelve buildings 10 m wide side by side along x, 30 m apart, seen
-// end-on along +z: each pitched roof's gable rises from the parapet at 30–40° (slate needs 25° or
-// more to shed rain; terraces like these were built at 30–45°), and four of five are pitched.
+// The roof macro on its own: twelve roofs of buildings 10 m wide (along z) and 12 m deep (along
+// x), set 30 m apart along x and seen end-on along +z, each on a wall 12 m high. Each pitched
+// roof's gable rises from the parapet at 30–40° (slate needs 25° or more to shed rain; terraces
+// like these were built at 30–45°), and four in five are pitched.
 TEST(PovRayStreetRoofs, PitchedRoofsRiseAt30To40Degrees) {
   SKIP_WITHOUT_POVRAY();
   const fs::path dir = testing::folder_with_street("povray_test_street_gables");
