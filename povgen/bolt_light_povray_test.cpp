@@ -29,9 +29,7 @@ double bolt_light(const std::string& name, float radius) {
   look.camera.fov_deg = 10.0;
   look.camera.look_at = {0.0, 1.6, 100.0};
   look.rain_medium = false;
-  const fs::path dir = testing::scratch_folder("bolt_light_test_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = testing::empty_scratch_folder("bolt_light_test_" + name);
   write_file_atomic(dir / "black_sky.inc", "background { rgb 0 }\n");
   look.environment.include_path = "black_sky.inc";
   write_shared_files(dir, look, 1, dir, {1, 1});

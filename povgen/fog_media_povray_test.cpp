@@ -51,9 +51,7 @@ std::vector<float> render_fog(const fs::path& dir, const std::string& samples) {
 
 TEST(PovRayFogMedia, ALampsLitAirIsTheConvergedMediumsSoftCone) {
   SKIP_WITHOUT_POVRAY();
-  const fs::path dir = testing::scratch_folder("fog_media_test");
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = testing::empty_scratch_folder("fog_media_test");
   write_file_atomic(dir / "environment_source.inc", kLampInFog);
   ExportParams look;
   look.width = 160;
@@ -102,9 +100,7 @@ TEST(PovRayFogMedia, ALampsLitAirIsTheConvergedMediumsSoftCone) {
 // fog shone four times as brightly as the lamps light it: 0.0139 here.
 TEST(PovRayFogMedia, AMistLitFromAboveShinesAsSingleScatteringSays) {
   SKIP_WITHOUT_POVRAY();
-  const fs::path dir = testing::scratch_folder("fog_media_single_scattering_test");
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = testing::empty_scratch_folder("fog_media_single_scattering_test");
   write_file_atomic(dir / "environment_source.inc",
                     "background { rgb 0 }\n"
                     "light_source { <0, 1000, 0> color rgb 1 parallel point_at <0, 0, 0> }\n");

@@ -129,9 +129,7 @@ ExportParams calm_puddles(int width, double coverage, double size_m) {
 /// `frames`.
 fs::path wet_folder(const std::string& name, const ExportParams& base,
                     const std::vector<sim::Frame>& frames, const char* environment = kWetPlane) {
-  const fs::path dir = testing::scratch_folder("povray_ground_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = testing::empty_scratch_folder("povray_ground_" + name);
   std::ofstream(dir / "wet.inc") << environment;
   ExportParams look = base;
   look.environment.include_path = "wet.inc";

@@ -281,6 +281,9 @@ std::string scene_focused_at_one_metre(double aperture_m) {
          inc.substr(camera, inc.find('\n', camera) - camera) + "\n";
 }
 
+// A pixel of that picture at its plane of focus, 1 m away: 2·tan(10°) m over 200 pixels.
+double pixel_at_the_focus_m() { return 2.0 * std::tan(10.0 * M_PI / 180.0) / 200.0; }
+
 // [camera] aperture_m is the lens opening: a sharp edge 10 m away, seen by a camera focused at
 // 1 m, blurs over a disc D = aperture_m · (10 − 1)/10 across at the plane of focus (thin-lens
 // geometry). Measured in linear light (EXR) from where the bright side starts to dim (< 0.98) to
@@ -289,14 +292,12 @@ std::string scene_focused_at_one_metre(double aperture_m) {
 TEST(PovRayFocalBlur, AnEdgeBehindTheFocusBlursOverTheLensOpening) {
   SKIP_WITHOUT_POVRAY();
   const double aperture_m = 0.04;
-  const fs::path dir = testing::scratch_folder("povray_test_focal_blur");
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  write_file_atomic(dir / "edge.pov", scene_focused_at_one_metre(aperture_m) +
-                                          "plane{-z,-10 pigment{function{x<0}} finish{ambient 0 "
-                                          "diffuse 0 emission 1}}\n");
-  ASSERT_EQ(run_povray(dir, "edge.pov +W200 +H200 -A +FE +Oedge.exr"), 0) << log_of(dir);
-  const auto px = read_rgb(dir / "edge.exr");
+  const fs::path dir = testing::empty_scratch_folder("povray_test_focal_blur");
+  const auto px = testing::trace_linear(dir, "edge",
+                                        scene_focused_at_one_metre(aperture_m) +
+                                            "plane{-z,-10 pigment{function{x<0}} finish{ambient 0 "
+                                            "diffuse 0 emission 1}}\n",
+                                        "+W200 +H200 -A");
   ASSERT_EQ(px.size(), 200u * 200u * 3u);
   int first_dim = -1, last_lit = -1;
   for (int x = 0; x < 200; ++x) {
@@ -306,9 +307,7 @@ TEST(PovRayFocalBlur, AnEdgeBehindTheFocusBlursOverTheLensOpening) {
     if (first_dim < 0 && v < 0.98f) first_dim = x;
     if (v > 0.02f) last_lit = x;
   }
-  // Pixels at the plane of focus: 2·tan(10°) m over 200 pixels.
-  const double pixel = 2.0 * std::tan(10.0 * M_PI / 180.0) / 200.0;
-  const double spread = (last_lit - first_dim + 1) * pixel;
+  const double spread = (last_lit - first_dim + 1) * pixel_at_the_focus_m();
   // ±10 %: a pixel at each end is 5 % of the ~18 pixels, the rest focal-blur grain.
   EXPECT_NEAR(spread, 0.895 * aperture_m * 0.9, 0.1 * 0.895 * aperture_m * 0.9)
       << "edge spread " << spread;
@@ -325,9 +324,7 @@ TEST(PovRayFocalBlur, AnEdgeBehindTheFocusBlursOverTheLensOpening) {
 TEST(PovRayFocalBlur, AThinLineOutOfFocusSpreadsOverTheOpeningAndKeepsItsLight) {
   SKIP_WITHOUT_POVRAY();
   const double aperture_m = 0.1;
-  const fs::path dir = testing::scratch_folder("povray_test_focal_blur_line");
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = testing::empty_scratch_folder("povray_test_focal_blur_line");
   // 2 m long, so the middle columns see all of the blurred line; 2 cm across, 10 m away.
   const double line_m = 0.02;
   const auto px = testing::trace_linear(
@@ -348,9 +345,8 @@ TEST(PovRayFocalBlur, AThinLineOutOfFocusSpreadsOverTheOpeningAndKeepsItsLight) 
     if (rows[y] > 0.0) last = y;
   }
   ASSERT_GE(first, 0) << "the line is not in the picture";
-  // The opening's disc at the plane of focus: aperture_m · (10 − 1)/10, over pixels of
-  // 2·tan(10°)/200 m.
-  const double pixel = 2.0 * std::tan(10.0 * M_PI / 180.0) / 200.0;
+  // The opening's disc at the plane of focus: aperture_m · (10 − 1)/10.
+  const double pixel = pixel_at_the_focus_m();
   const double disc_px = aperture_m * 0.9 / pixel;
   EXPECT_NEAR(last - first + 1, disc_px, 0.1 * disc_px) << "rows lit " << first << "–" << last;
   // The middle 70 % of the lit rows, where the disc's chords are long: none of them dark.

@@ -28,6 +28,15 @@ inline std::filesystem::path scratch_folder(const std::string& name) {
   return ::raintrace::test_support::process_scratch_path("raintrace_" + name);
 }
 
+/// scratch_folder(name), emptied and made again: a test's own folder, with nothing left from an
+/// earlier run.
+inline std::filesystem::path empty_scratch_folder(const std::string& name) {
+  const std::filesystem::path dir = scratch_folder(name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
 inline bool have_povray() { return std::system("command -v povray >/dev/null 2>&1") == 0; }
 
 #define SKIP_WITHOUT_POVRAY()                       \
@@ -46,9 +55,7 @@ inline int run_povray(const std::filesystem::path& dir, const std::string& args)
 /// as ENVIRONMENT.inc, for scenes that include it.
 inline std::filesystem::path folder_with_environment(const std::string& name,
                                                      const std::string& environment) {
-  const std::filesystem::path dir = scratch_folder(name);
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
+  const std::filesystem::path dir = empty_scratch_folder(name);
   write_file_atomic(dir / (environment + ".inc"), environment_template(environment));
   return dir;
 }

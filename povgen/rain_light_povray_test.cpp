@@ -89,9 +89,7 @@ struct Renders {
 
 Renders render(const std::string& name, ExportParams look, const Environment& environment,
                const std::vector<Drop>& drops) {
-  const fs::path dir = testing::scratch_folder("rain_light_test_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = testing::empty_scratch_folder("rain_light_test_" + name);
   write_file_atomic(dir / "environment_source.inc", environment_text(environment));
   look.environment.include_path = "environment_source.inc";
   look.rain_medium = false;  // only the streaks and drops are measured here
