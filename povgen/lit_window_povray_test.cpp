@@ -26,15 +26,15 @@ constexpr double kFovDeg = 10.0;
 
 // One window 1.3 × 1.75 m in a wall far from the street (its face x = 1000, facing −x), lit by
 // a white room at level 1 (`lit`) or dark, seen from `off_normal_deg` off the wall's normal,
-// along the wall toward +z, against a black sky. Red channel, linear.
-std::vector<float> window_seen(const fs::path& dir, const std::string& name, bool lit,
-                               double off_normal_deg) {
+// along the wall toward +z, against a black sky: the picture's light, its red summed over the
+// pixels, linear.
+double light_seen(const fs::path& dir, const std::string& name, bool lit, double off_normal_deg) {
   const double a = off_normal_deg * std::numbers::pi / 180.0;
-  const double cx = 1000.0 - kDistance * std::cos(a);
-  const double cz = 0.65 - kDistance * std::sin(a);
-  const std::string camera =
-      "camera { perspective location <" + std::to_string(cx) + ", 10.875, " + std::to_string(cz) +
-      "> look_at <1000, 10.875, 0.65> right x up y angle " + std::to_string(kFovDeg) + " }\n";
+  const std::string location = "<" + std::to_string(1000.0 - kDistance * std::cos(a)) +
+                               ", 10.875, " + std::to_string(0.65 - kDistance * std::sin(a)) + ">";
+  const std::string camera = "camera { perspective location " + location +
+                             " look_at <1000, 10.875, 0.65> right x up y angle " +
+                             std::to_string(kFovDeg) + " }\n";
   // The wall around the opening z 0–1.3, y 10–11.75, 30 cm thick, as RT_Building lays it, long
   // enough that the camera cannot see past its end to the room behind.
   const std::string wall =
@@ -45,9 +45,9 @@ std::vector<float> window_seen(const fs::path& dir, const std::string& name, boo
       "#version 3.7;\n"
       "global_settings { assumed_gamma 1 }\n"
       "#declare RT_Preview = 1;\n"
-      "#declare RT_CameraPosition = <" +
-      std::to_string(cx) + ", 10.875, " + std::to_string(cz) +
-      ">;\n"
+      "#declare RT_CameraPosition = " +
+      location +
+      ";\n"
       "#include \"night_street.inc\"\n"
       "sky_sphere { pigment { rgb 0 } }\n"
       "union { " +
@@ -55,15 +55,9 @@ std::vector<float> window_seen(const fs::path& dir, const std::string& name, boo
       ", RT_FrameDark, <1, 1, 1>, 1) translate x * 1000 }\n" + camera;
   const std::vector<float> rgb =
       testing::trace_linear(dir, name, scene, testing::square_size(kPixels) + " +A0.05 +AM2 +R3");
-  std::vector<float> red;
-  for (std::size_t i = 0; i < rgb.size(); i += 3) red.push_back(rgb[i]);
-  return red;
-}
-
-double sum(const std::vector<float>& red) {
-  double total = 0.0;
-  for (const float value : red) total += value;
-  return total;
+  double light = 0.0;
+  for (std::size_t i = 0; i < rgb.size(); i += 3) light += rgb[i];
+  return light;
 }
 
 // Seen square on, the room's light through the glass (its mean radiance over the opening) is
@@ -79,14 +73,14 @@ TEST(PovRayLitWindow, SeenAlongTheStreetItsRevealShinesWithTheRoomsLight) {
   const double metres_per_pixel =
       2.0 * kDistance * std::tan(kFovDeg / 2 * std::numbers::pi / 180) / kPixels;
   const double opening_pixels = 1.3 * 1.75 / (metres_per_pixel * metres_per_pixel);
-  const double room = (sum(window_seen(dir, "front_lit", true, 0.0)) -
-                       sum(window_seen(dir, "front_dark", false, 0.0))) /
-                      opening_pixels;
+  const double room =
+      (light_seen(dir, "front_lit", true, 0.0) - light_seen(dir, "front_dark", false, 0.0)) /
+      opening_pixels;
 
   // Along the street: the far jamb, 0.11 × 1.75 m, faces the camera 4° off its normal; the near
   // one's edge hides all of it but the 1.3 m / tan 86° = 9 cm nearest the wall's face.
-  const double lit = sum(window_seen(dir, "along_lit", true, 86.0));
-  const double dark = sum(window_seen(dir, "along_dark", false, 86.0));
+  const double lit = light_seen(dir, "along_lit", true, 86.0);
+  const double dark = light_seen(dir, "along_dark", false, 86.0);
   const double jamb_pixels = std::min(0.11, 1.3 / std::tan(86.0 * std::numbers::pi / 180)) *
                              std::cos(4.0 * std::numbers::pi / 180) * 1.75 /
                              (metres_per_pixel * metres_per_pixel);
