@@ -3,9 +3,12 @@
 // dash's middle, 0 on its centre line and 1 at its worn rim. POV-Ray wraps a pigment function's
 // value into 0..1, so a value pushed below 0 by the rim's noise comes back near 1, the asphalt's
 // end of the map: until 2026-12-05 every dash had a wandering dark line down its middle.
+// The yellow lines of the waiting restrictions run along the kerbs, double or single.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -48,6 +51,68 @@ TEST(PovRayRoadMarkings, ADashIsPaintAllAlongItsMiddle) {
     }
   }
   EXPECT_LT(highest, 0.5f) << "asphalt shows down the middle of a dash";
+}
+
+constexpr int kKerbColumns = 240;  // pixels across the 0.6 m of road beside the left kerb
+constexpr int kKerbRows = 40;      // pixels along 1 m of it
+
+/// How yellow the road is across the 0.6 m beside the left kerb (x from −4 to −3.4), from
+/// straight above, lit from overhead, over 1 m of the street from z = Z: each column's mean red
+/// less its mean blue, the kerb's face first.
+std::vector<double> yellow_across_left_kerb(const fs::path& dir, const std::string& name,
+                                            double z) {
+  // The camera given as vectors, not look_at, so the picture's columns run along +x as written.
+  const std::string scene = fmt::format(
+      "#version 3.7;\n"
+      "global_settings {{ assumed_gamma 1 }}\n"
+      "#include \"night_street.inc\"\n"
+      "camera {{ orthographic location <-3.7, 0.5, {0}> direction -y right x * 0.6 up z }}\n"
+      "light_source {{ <-3.7, 100, {0}> rgb 10 parallel point_at <-3.7, 0, {0}> shadowless }}\n",
+      z + 0.5);
+  const std::string size = "+W" + std::to_string(kKerbColumns) + " +H" + std::to_string(kKerbRows);
+  const std::vector<float> picture =
+      testing::trace_linear(dir, name, scene, size + " +A0.05 +AM2 +R2");
+  std::vector<double> yellow(kKerbColumns, 0.0);
+  if (picture.size() != 3u * kKerbColumns * kKerbRows) return yellow;
+  for (int column = 0; column < kKerbColumns; ++column) {
+    for (int row = 0; row < kKerbRows; ++row) {
+      const std::size_t i = 3u * (row * kKerbColumns + column);
+      yellow[column] += (picture[i] - picture[i + 2]) / kKerbRows;
+    }
+  }
+  return yellow;
+}
+
+/// The mean of `values` over the columns that lie from `from_m` to `to_m` out from the kerb.
+double mean_between(const std::vector<double>& values, double from_m, double to_m) {
+  const auto first = static_cast<int>(from_m / 0.6 * kKerbColumns);
+  const auto last = static_cast<int>(to_m / 0.6 * kKerbColumns);
+  double sum = 0.0;
+  for (int column = first; column < last; ++column) sum += values[column];
+  return sum / (last - first);
+}
+
+TEST(PovRayRoadMarkings, WaitingLinesAlongTheLeftKerbRunDoubleThenSingle) {
+  SKIP_WITHOUT_POVRAY();
+  const fs::path dir = testing::folder_with_street("povray_test_waiting_lines");
+  // Double lines from the camera's end to z = 24, a single one from there to z = 54: lines
+  // 50 mm wide from 250 mm out, a line's width apart. Their middles, with a centimetre kept
+  // clear of each worn rim: 0.26–0.29 m and 0.36–0.39 m out; between them 0.31–0.34 m; the
+  // asphalt beyond, 0.45–0.6 m, and next to the kerb, 0.05–0.2 m.
+  const std::vector<double> double_lines = yellow_across_left_kerb(dir, "double", 10.0);
+  const std::vector<double> single_line = yellow_across_left_kerb(dir, "single", 40.0);
+  fs::remove_all(dir);
+  const double asphalt = std::max({std::fabs(mean_between(double_lines, 0.45, 0.6)),
+                                   std::fabs(mean_between(double_lines, 0.05, 0.2)),
+                                   std::fabs(mean_between(single_line, 0.45, 0.6)), 1e-4});
+  // Yellow paint: red well above blue, as the asphalt's grey is not.
+  EXPECT_GT(mean_between(double_lines, 0.26, 0.29), 10 * asphalt) << "the kerb's line";
+  EXPECT_GT(mean_between(double_lines, 0.36, 0.39), 10 * asphalt) << "the double's second line";
+  EXPECT_LT(mean_between(double_lines, 0.31, 0.34), 0.2 * mean_between(double_lines, 0.26, 0.29))
+      << "the two lines of the double run together";
+  EXPECT_GT(mean_between(single_line, 0.26, 0.29), 10 * asphalt) << "the single line";
+  EXPECT_LT(mean_between(single_line, 0.36, 0.39), 0.2 * mean_between(single_line, 0.26, 0.29))
+      << "a second line where the line is single";
 }
 
 }  // namespace
