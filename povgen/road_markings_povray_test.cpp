@@ -3,7 +3,8 @@
 // dash's middle, 0 on its centre line and 1 at its worn rim. POV-Ray wraps a pigment function's
 // value into 0..1, so a value pushed below 0 by the rim's noise comes back near 1, the asphalt's
 // end of the map: until 2026-12-05 every dash had a wandering dark line down its middle.
-// The yellow lines of the waiting restrictions run along the kerbs, double or single.
+// The yellow lines of the waiting restrictions run along the kerbs, double or single, and the
+// gullies' gratings beside them drain through slots.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -113,6 +114,38 @@ TEST(PovRayRoadMarkings, WaitingLinesAlongTheLeftKerbRunDoubleThenSingle) {
   EXPECT_GT(mean_between(single_line, 0.26, 0.29), 10 * asphalt) << "the single line";
   EXPECT_LT(mean_between(single_line, 0.36, 0.39), 0.2 * mean_between(single_line, 0.26, 0.29))
       << "a second line where the line is single";
+}
+
+TEST(PovRayRoadMarkings, AGullyGratingShowsItsSevenSlotsBetweenIronBars) {
+  SKIP_WITHOUT_POVRAY();
+  const fs::path dir = testing::folder_with_street("povray_test_gully");
+  // The left kerb's first grating, 0.45 m along the kerb at z = 3.5, from straight above and lit
+  // from overhead: a line of 90 pixels along its middle, 0.2 m out from the kerb, from z = 3.275
+  // to 3.725, 5 mm a pixel.
+  constexpr int kAlongGrating = 90;
+  const std::string scene =
+      "#version 3.7;\n"
+      "global_settings { assumed_gamma 1 }\n"
+      "#include \"night_street.inc\"\n"
+      "camera { orthographic location <-3.8, 0.5, 3.5> direction -y right x * 0.005 up z * 0.45 }\n"
+      "light_source { <-3.8, 100, 3.5> rgb 10 parallel point_at <-3.8, 0, 3.5> shadowless }\n";
+  const std::vector<float> picture =
+      testing::trace_linear(dir, "gully", scene, "+W1 +H" + std::to_string(kAlongGrating) + " -A");
+  fs::remove_all(dir);
+  ASSERT_EQ(picture.size(), 3u * kAlongGrating);
+  // Bars and frame are wet iron lit from above; the slots open onto the dark pot. Counted from
+  // the far end to the near: runs of pixels darker than a quarter of the brightest.
+  float brightest = 0.0f;
+  for (int row = 0; row < kAlongGrating; ++row) brightest = std::max(brightest, picture[3u * row]);
+  ASSERT_GT(brightest, 0.0f);
+  int slots = 0;
+  bool in_slot = false;
+  for (int row = 0; row < kAlongGrating; ++row) {
+    const bool dark = picture[3u * row] < 0.25f * brightest;
+    if (dark && !in_slot) ++slots;
+    in_slot = dark;
+  }
+  EXPECT_EQ(slots, 7);
 }
 
 }  // namespace
