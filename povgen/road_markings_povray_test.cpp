@@ -54,6 +54,22 @@ TEST(PovRayRoadMarkings, ADashIsPaintAllAlongItsMiddle) {
   EXPECT_LT(highest, 0.5f) << "asphalt shows down the middle of a dash";
 }
 
+/// The night street's road from straight above, lit from overhead (and by the street's own
+/// lamps): `across_m` along x by `along_m` along z around (x, z), the picture's columns running
+/// along +x and its rows along z, traced in linear light with `options`.
+std::vector<float> road_from_above(const fs::path& dir, const std::string& name, double x, double z,
+                                   double across_m, double along_m, const std::string& options) {
+  // The camera given as vectors, not look_at, so the picture's columns run along +x as written.
+  const std::string scene = fmt::format(
+      "#version 3.7;\n"
+      "global_settings {{ assumed_gamma 1 }}\n"
+      "#include \"night_street.inc\"\n"
+      "camera {{ orthographic location <{0}, 0.5, {1}> direction -y right x * {2} up z * {3} }}\n"
+      "light_source {{ <{0}, 100, {1}> rgb 10 parallel point_at <{0}, 0, {1}> shadowless }}\n",
+      x, z, across_m, along_m);
+  return testing::trace_linear(dir, name, scene, options);
+}
+
 constexpr int kKerbColumns = 240;  // pixels across the 0.6 m of road beside the left kerb
 constexpr int kKerbRows = 40;      // pixels along 1 m of it
 
@@ -62,17 +78,9 @@ constexpr int kKerbRows = 40;      // pixels along 1 m of it
 /// less its mean blue, the kerb's face first.
 std::vector<double> yellow_across_left_kerb(const fs::path& dir, const std::string& name,
                                             double z) {
-  // The camera given as vectors, not look_at, so the picture's columns run along +x as written.
-  const std::string scene = fmt::format(
-      "#version 3.7;\n"
-      "global_settings {{ assumed_gamma 1 }}\n"
-      "#include \"night_street.inc\"\n"
-      "camera {{ orthographic location <-3.7, 0.5, {0}> direction -y right x * 0.6 up z }}\n"
-      "light_source {{ <-3.7, 100, {0}> rgb 10 parallel point_at <-3.7, 0, {0}> shadowless }}\n",
-      z + 0.5);
   const std::string size = "+W" + std::to_string(kKerbColumns) + " +H" + std::to_string(kKerbRows);
   const std::vector<float> picture =
-      testing::trace_linear(dir, name, scene, size + " +A0.05 +AM2 +R2");
+      road_from_above(dir, name, -3.7, z + 0.5, 0.6, 1.0, size + " +A0.05 +AM2 +R2");
   std::vector<double> yellow(kKerbColumns, 0.0);
   if (picture.size() != 3u * kKerbColumns * kKerbRows) return yellow;
   for (int column = 0; column < kKerbColumns; ++column) {
@@ -123,14 +131,8 @@ TEST(PovRayRoadMarkings, AGullyGratingShowsItsSevenSlotsBetweenIronBars) {
   // from overhead: a line of 90 pixels along its middle, 0.2 m out from the kerb, from z = 3.275
   // to 3.725, 5 mm a pixel.
   constexpr int kAlongGrating = 90;
-  const std::string scene =
-      "#version 3.7;\n"
-      "global_settings { assumed_gamma 1 }\n"
-      "#include \"night_street.inc\"\n"
-      "camera { orthographic location <-3.8, 0.5, 3.5> direction -y right x * 0.005 up z * 0.45 }\n"
-      "light_source { <-3.8, 100, 3.5> rgb 10 parallel point_at <-3.8, 0, 3.5> shadowless }\n";
-  const std::vector<float> picture =
-      testing::trace_linear(dir, "gully", scene, "+W1 +H" + std::to_string(kAlongGrating) + " -A");
+  const std::vector<float> picture = road_from_above(
+      dir, "gully", -3.8, 3.5, 0.005, 0.45, "+W1 +H" + std::to_string(kAlongGrating) + " -A");
   fs::remove_all(dir);
   ASSERT_EQ(picture.size(), 3u * kAlongGrating);
   // Bars and frame are wet iron lit from above; the slots open onto the dark pot. Counted from
