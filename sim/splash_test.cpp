@@ -222,25 +222,27 @@ TEST(Splash, SameImpactSameDroplets) {
   for (const float o : a.opacity) EXPECT_FLOAT_EQ(o, 2.0f);  // weight 2, not fading yet
 }
 
-TEST(Splash, FarDropletsAreThinnedAndCarryTheLightOfTheOthers) {
-  // A droplet blocks the share (d/pixel)·(d/streak) of its pixels' light. Seen through 2 mm
-  // pixels in a still frame (the streak one pixel long), droplets of ~0.3 mm block ~2 %: about
-  // that share of them is kept, each weighing 1/share, so the light they block together stays
-  // (to the noise of ~400 kept droplets: 12 %).
+TEST(Splash, FarDropletsAreThinnedToTheFloorAndCarryTheLightOfTheOthers) {
+  // A droplet blocks the share (d/pixel)·(d/streak) of its pixels' light. Seen through 2 cm
+  // pixels in a still frame (the streak one pixel long), droplets of ~0.3 mm block ~2·10⁻⁴:
+  // about that share over kDropletCoverageFloor of them is kept, each weighing floor/share, so
+  // that each blocks the floor and together they block the light all of them would (to the
+  // noise of ~400 kept droplets: 12 %). A kept droplet blocking a whole pixel's light, as until
+  // 2026-12-06, stood for hundreds and showed as an opaque white dash on the road.
   SplashParams params;
   params.droplets = 64;
-  const double pixel = 0.002;
+  const double pixel = 0.02;
+  auto share = [&](const Drops& d, std::size_t i) {
+    return std::min(1.0, d.diameter[i] / pixel) * d.diameter[i] / pixel;
+  };
   auto light = [&](const Drops& d) {
     double sum = 0.0;
-    for (std::size_t i = 0; i < d.size(); ++i) {
-      const double share = std::min(1.0, d.diameter[i] / pixel) * d.diameter[i] / pixel;
-      sum += d.opacity[i] * share;
-    }
+    for (std::size_t i = 0; i < d.size(); ++i) sum += d.opacity[i] * share(d, i);
     return sum;
   };
   double all = 0.0, kept = 0.0;
-  std::size_t n_all = 0, n_kept = 0;
-  for (std::uint64_t key = 0; key < 400; ++key) {
+  std::size_t n_all = 0, n_kept = 0, n_too_bright = 0;
+  for (std::uint64_t key = 0; key < 1000; ++key) {
     const ImpactInput in = impact_of(2.5, 0.3, key);
     Drops a, b;
     add_splash_droplets(params, in, 0.0, 1.0f, 0.0, 0.0, 3, a);
@@ -249,10 +251,17 @@ TEST(Splash, FarDropletsAreThinnedAndCarryTheLightOfTheOthers) {
     kept += light(b);
     n_all += a.size();
     n_kept += b.size();
+    // Thinned, a droplet blocks the floor; one blocking more on its own is kept as it is.
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      if (b.opacity[i] * share(b, i) > 1.001 * std::max(kDropletCoverageFloor, share(b, i))) {
+        ++n_too_bright;
+      }
+    }
   }
   EXPECT_LT(n_kept * 10, n_all);
   EXPECT_GT(n_kept, 200u);
   EXPECT_NEAR(kept / all, 1.0, 0.12);
+  EXPECT_EQ(n_too_bright, 0u);
 }
 
 }  // namespace
