@@ -161,26 +161,17 @@ Droplet crown_droplet(const CrownSplash& crown, const ImpactInput& impact, int k
 void launch_droplets(const CrownSplash& crown, const ImpactInput& impact, double impact_time_s,
                      float weight, double pixel_m, double exposure_s, std::uint64_t seed,
                      std::vector<FlyingDroplet>& out) {
-  // The share of a pixel's light one droplet blocks, over the floor: its width over the
-  // pixel's (at most 1), times the share of its streak's pixels it covers in time, d over the
-  // streak's length (or over a pixel, for a streak shorter than one). The width alone bounds it:
-  // testing that first spares computing the droplets surely dropped.
-  const double largest =
-      pixel_m > 0.0 ? weight * crown.max_diameter_m / pixel_m / kDropletCoverageFloor : 0.0;
+  // The share of a pixel's light one droplet blocks: its width over the pixel's (at most 1),
+  // times the share of its streak's pixels it covers in time, d over the streak's length (or
+  // over a pixel, for a streak shorter than one). The width alone bounds it: an impact whose
+  // largest droplet could not reach the floor throws none worth drawing.
+  if (pixel_m > 0.0 && weight * crown.max_diameter_m / pixel_m < kDropletCoverageFloor) return;
   for (int k = 0; k < crown.droplets; ++k) {
-    const double u = unit(seed, impact.key, droplet_dim(k, 3));
-    if (pixel_m > 0.0 && u >= largest) continue;
     const Droplet drop = crown_droplet(crown, impact, k, seed);
-    float kept_weight = weight;
     if (pixel_m > 0.0) {
       const double d = drop.diameter_m;
       const double streak = std::max({glm::length(drop.velocity) * exposure_s, pixel_m, d});
-      const double share =
-          weight * std::min(1.0, d / pixel_m) * (d / streak) / kDropletCoverageFloor;
-      if (share < 1.0) {
-        if (u >= share) continue;
-        kept_weight = static_cast<float>(weight / share);
-      }
+      if (weight * std::min(1.0, d / pixel_m) * (d / streak) < kDropletCoverageFloor) continue;
     }
     FlyingDroplet f;
     f.id = hash_key(seed, Stream::splash, impact.key, droplet_dim(k, 7));
@@ -190,7 +181,7 @@ void launch_droplets(const CrownSplash& crown, const ImpactInput& impact, double
     f.wind = glm::vec3(impact.velocity.x, 0.0f, impact.velocity.z);
     f.diameter_m = drop.diameter_m;
     f.drag = static_cast<float>(drag_coefficient(drop.diameter_m));
-    f.weight = kept_weight;
+    f.weight = weight;
     f.ground_y = impact.position.y;
     out.push_back(f);
   }

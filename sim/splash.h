@@ -109,22 +109,24 @@ struct FlyingDroplet {
   bool landed = false;  ///< fell back to the ground: gone
 };
 
-/// The share of its pixels' light a droplet thinned by launch_droplets blocks: as faint as the
-/// rain's own thinned streaks are drawn at preview (povgen's min_streak_coverage, 0.01). Until
-/// 2026-12-06 a thinned droplet blocked a whole pixel's light along its streak: each far
-/// droplet kept stood for hundreds and was drawn as an opaque streak of water, a bright white
-/// dash on the road a hundred times brighter than the rain around it.
+/// The least share of its pixels' light a droplet must block to be drawn (launch_droplets): as
+/// faint as the default's rain streaks are drawn (povgen's min_streak_coverage, 0.01). Fainter
+/// droplets are left out, their light with them: together they add under 0.05 % of a frame's
+/// light, and drawn as their rain's are (kept by chance, each carrying the others' light) they
+/// cost 3 % of the default's frame at 1280×720 final and 10 % of a 320×240 preview
+/// (BENCHMARKS.md, "Far splash droplets"). Until 2026-12-06 they were kept by chance carrying a
+/// whole pixel's light: each far droplet kept stood for about a thousand and was drawn as an
+/// opaque streak of water, a bright white dash on the road.
 inline constexpr double kDropletCoverageFloor = 0.01;
 
 /// Launches the droplets of an impact's crown (k < crown.droplets) from the ground with their
 /// launch velocity, appended to `out`. Level of detail: with pixel_m > 0 (the width of a pixel at
-/// the impact), a droplet whose weight × share of its pixels' light is c < kDropletCoverageFloor
-/// — its width over a pixel's, times d / (its streak's length in `exposure_s`, at least a
-/// pixel): a fast droplet covers each point of its streak for a moment only (Garg & Nayar) — is
-/// kept with probability c / kDropletCoverageFloor and then weighs that much more, so that it
-/// blocks kDropletCoverageFloor of its pixels' light. The expected light per pixel stays, and a
-/// crown costs the droplets that show instead of dozens that would not. (Taken at the launch
-/// speed: a droplet slowed by drag later is a little too bright.)
+/// the impact), a droplet whose weight × share of its pixels' light is below
+/// kDropletCoverageFloor — its width over a pixel's, times d / (its streak's length in
+/// `exposure_s`, at least a pixel): a fast droplet covers each point of its streak for a moment
+/// only (Garg & Nayar) — is left out. A crown costs the droplets that show instead of dozens
+/// that would not. (Taken at the launch speed: a droplet slowed by drag later is a little
+/// fainter than its share says.)
 void launch_droplets(const CrownSplash& crown, const ImpactInput& impact, double impact_time_s,
                      float weight, double pixel_m, double exposure_s, std::uint64_t seed,
                      std::vector<FlyingDroplet>& out);
