@@ -125,8 +125,8 @@ inline constexpr double kDropletCoverageFloor = 0.01;
 /// kDropletCoverageFloor — its width over a pixel's, times d / (its streak's length in
 /// `exposure_s`, at least a pixel): a fast droplet covers each point of its streak for a moment
 /// only (Garg & Nayar) — is left out. A crown costs the droplets that show instead of dozens
-/// that would not. (Taken at the launch speed: a droplet slowed by drag later is a little
-/// fainter than its share says.)
+/// that would not. (Taken at the launch speed: a droplet slowed by drag later blocks a little
+/// more than that, so a few of those left out would show near the end of their flight.)
 void launch_droplets(const CrownSplash& crown, const ImpactInput& impact, double impact_time_s,
                      float weight, double pixel_m, double exposure_s, std::uint64_t seed,
                      std::vector<FlyingDroplet>& out);
