@@ -198,5 +198,54 @@ TEST(PovRayWetPavement, PuddlesTakeTheRainsRoughnessFromTheGround) {
   fs::remove_all(dir);
 }
 
+// The rain moves the road's water film as it moves the puddles: in final frames the film's
+// surface is the ground include's RT_RingHeight (the frame's rings of the impacts), averaged with
+// the aggregate's relief, not a fixed undulation. Seen
+// from straight above under a lit ceiling 20 m up whose light grows along x (10 + 0.25·x), level
+// water mirrors the ceiling straight above it; tilted by a height field of uniform slope 0.2, the
+// film, a normal averaged half and half with the aggregate's, turns ~0.1 and mirrors the ceiling
+// ~4 m toward −x, a tenth darker. Until 2026-12-06 the film's undulation was wrinkles of 0.5–0.8
+// m whatever the rain did (blind viewers: "a windblown pond, even when no rain is falling"): the
+// same light both ways.
+TEST(PovRayWetRoad, TheFilmTakesTheRainsSurfaceFromTheGround) {
+  SKIP_WITHOUT_POVRAY();
+  const fs::path dir = testing::folder_with_street("povray_test_road_rain");
+  const std::string options = testing::square_size(kRoadPixels) + " -A";
+  const auto mirrored = [&](const std::string& name, double slope) {
+    // The ground include's two names the road reads, as scene.inc would declare them: the rings'
+    // height field and (a stand-in) the aggregate's relief drawn no finer than the pixels.
+    const std::string ground =
+        "#declare RT_RingHeight = function(x, y, z) { " + std::to_string(slope) +
+        " * x }\n"
+        "#macro RT_ResolvedBumps(Amount, Scale) bumps Amount scale Scale #end\n";
+    // The road as top_view_scene() shows it, in the water of the street's road plane (ior 1.33,
+    // for Fresnel's share), under the ceiling.
+    const std::string scene =
+        "#version 3.7;\n"
+        "global_settings { assumed_gamma 1 }\n"
+        "#declare RT_Preview = 0;\n" +
+        ground +
+        "#include \"night_street.inc\"\n"
+        "camera { orthographic location <0, 5, -200> look_at <0, 0, -200> right x * 40 up z * 40 "
+        "}\n"
+        "box { <-20, 0, -220>, <20, 0.001, -180> texture { RT_Asphalt } interior { ior 1.33 } }\n"
+        "plane { y, 20 pigment { gradient x color_map { [0 rgb 0] [1 rgb 1] } scale 80 "
+        "translate -40 * x } finish { ambient 0 diffuse 0 emission 20 } }\n";
+    const auto picture = testing::trace_linear(dir, name, scene, options);
+    EXPECT_EQ(picture.size(), 3u * kRoadPixels * kRoadPixels);
+    double sum = 0.0;
+    for (const float value : picture) sum += value;
+    return picture.empty() ? 0.0 : sum / static_cast<double>(picture.size());
+  };
+  const double level = mirrored("level", 0.0);
+  const double tilted = mirrored("tilted", 0.2);
+  std::printf("the road's film under a ceiling lit along x: level %.4f, tilted %.4f\n", level,
+              tilted);
+  ASSERT_GT(level, 0.0);
+  EXPECT_LT(tilted, 0.95 * level) << "the film ignores the ground's water surface";
+  EXPECT_GT(tilted, 0.75 * level) << "the film tilts more than half the water's slope";
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace raintrace::povgen
