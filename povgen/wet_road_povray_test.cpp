@@ -36,23 +36,26 @@ double lekner_dorf_wet_albedo(double dry) {
 
 // Ground far behind the street's end (z = −200, where nothing stands) in `texture`, 40 m × 40 m,
 // seen by `camera`. `sun` adds a parallel light of 1 from straight above. `before` is declared
-// ahead of the template, as scene.inc declares the ground include's functions.
+// ahead of the template, as scene.inc declares the ground include's functions. `interior` gives
+// the ground one (without, Fresnel's reflection is nil: the street's road plane has ior 1.33).
 std::string far_ground_scene(const std::string& camera, const std::string& texture, bool sun,
-                             const std::string& before = "") {
+                             const std::string& before = "", const std::string& interior = "") {
   return "#version 3.7;\n"
          "global_settings { assumed_gamma 1 }\n"
          "#declare RT_Preview = 0;\n" +
          before + "#include \"night_street.inc\"\n" + camera +
-         "\nbox { <-20, 0, -220>, <20, 0.001, -180> texture { " + texture + " } }\n" +
+         "\nbox { <-20, 0, -220>, <20, 0.001, -180> texture { " + texture + " } " + interior +
+         " }\n" +
          (sun ? "light_source { <0, 1000, -200> rgb 1 parallel point_at <0, 0, -200> }\n" : "");
 }
 
 // The ground seen straight down by an orthographic camera over all of it, so that its patches of
 // lighter and darker asphalt or slabs average out.
-std::string top_view_scene(const std::string& texture, bool sun, const std::string& before = "") {
+std::string top_view_scene(const std::string& texture, bool sun, const std::string& before = "",
+                           const std::string& interior = "") {
   return far_ground_scene(
       "camera { orthographic location <0, 5, -200> look_at <0, 0, -200> right x * 40 up z * 40 }",
-      texture, sun, before);
+      texture, sun, before, interior);
 }
 
 // The road so. Its own specular highlight, which such a light would put right where the camera
@@ -198,15 +201,14 @@ TEST(PovRayWetPavement, PuddlesTakeTheRainsRoughnessFromTheGround) {
   fs::remove_all(dir);
 }
 
-// The rain moves the road's water film as it moves the puddles: in final frames the film's
-// surface is the ground include's RT_RingHeight (the frame's rings of the impacts), averaged with
-// the aggregate's relief, not a fixed undulation. Seen
-// from straight above under a lit ceiling 20 m up whose light grows along x (10 + 0.25·x), level
-// water mirrors the ceiling straight above it; tilted by a height field of uniform slope 0.2, the
-// film, a normal averaged half and half with the aggregate's, turns ~0.1 and mirrors the ceiling
-// ~4 m toward −x, a tenth darker. Until 2026-12-06 the film's undulation was wrinkles of 0.5–0.8
-// m whatever the rain did (blind viewers: "a windblown pond, even when no rain is falling"): the
-// same light both ways.
+// The rain moves the road's water film as it moves the puddles: in final frames the film's surface
+// is the ground include's RT_RingHeight (the frame's rings of the impacts), averaged with the
+// aggregate's relief, not a fixed undulation. Seen from straight above under a lit ceiling 20 m up
+// whose light grows along x (10 + 0.25·x), level water mirrors the ceiling straight above it;
+// tilted by a height field of uniform slope 0.2, the film, a normal averaged half and half with the
+// aggregate's, turns ~0.1 and mirrors the ceiling ~4 m toward −x, a tenth darker. Until 2026-12-06
+// the film's undulation was wrinkles of 0.5–0.8 m whatever the rain did (blind viewers: "a
+// windblown pond, even when no rain is falling"): the same light both ways.
 TEST(PovRayWetRoad, TheFilmTakesTheRainsSurfaceFromTheGround) {
   SKIP_WITHOUT_POVRAY();
   const fs::path dir = testing::folder_with_street("povray_test_road_rain");
@@ -218,17 +220,10 @@ TEST(PovRayWetRoad, TheFilmTakesTheRainsSurfaceFromTheGround) {
         "#declare RT_RingHeight = function(x, y, z) { " + std::to_string(slope) +
         " * x }\n"
         "#macro RT_ResolvedBumps(Amount, Scale) bumps Amount scale Scale #end\n";
-    // The road as top_view_scene() shows it, in the water of the street's road plane (ior 1.33,
-    // for Fresnel's share), under the ceiling.
+    // The road in the water of the street's road plane (ior 1.33, for Fresnel's share), under
+    // the ceiling.
     const std::string scene =
-        "#version 3.7;\n"
-        "global_settings { assumed_gamma 1 }\n"
-        "#declare RT_Preview = 0;\n" +
-        ground +
-        "#include \"night_street.inc\"\n"
-        "camera { orthographic location <0, 5, -200> look_at <0, 0, -200> right x * 40 up z * 40 "
-        "}\n"
-        "box { <-20, 0, -220>, <20, 0.001, -180> texture { RT_Asphalt } interior { ior 1.33 } }\n"
+        top_view_scene("RT_Asphalt", false, ground, "interior { ior 1.33 }") +
         "plane { y, 20 pigment { gradient x color_map { [0 rgb 0] [1 rgb 1] } scale 80 "
         "translate -40 * x } finish { ambient 0 diffuse 0 emission 20 } }\n";
     const auto picture = testing::trace_linear(dir, name, scene, options);
