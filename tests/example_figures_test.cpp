@@ -733,19 +733,12 @@ TEST(ExampleFigures, DefaultStreetRainShowsInTheLampsCone) {
   EXPECT_NEAR(light, 1.0, 0.05) << "the drawn rain changes the cone's light, not only its grain";
 }
 
-// POV-Ray's count of how deep its rays went ("Max Level: N/M" in its statistics), -1 if the
-// log has none.
-int deepest_ray(const std::string& log) {
-  const std::size_t at = log.find("Max Level:");
+// The number after `label` in POV-Ray's statistics, -1 if the log has none: "\nRays:" for the
+// rays it traced, "Max Level:" for how deep they went (its "N/M").
+long povray_statistic(const std::string& log, const std::string& label) {
+  const std::size_t at = log.find(label);
   if (at == std::string::npos) return -1;
-  return std::atoi(log.c_str() + at + std::string{"Max Level:"}.size());
-}
-
-// POV-Ray's count of the rays it traced (the statistics' line "Rays: N"), -1 if the log has none.
-long traced_rays(const std::string& log) {
-  const std::size_t at = log.find("\nRays:");
-  if (at == std::string::npos) return -1;
-  return std::atol(log.c_str() + at + std::string{"\nRays:"}.size());
+  return std::atol(log.c_str() + at + label.size());
 }
 
 // default with its camera at 1.0 m instead of 1.45 (look_at lowered with it), frame 16 at
@@ -780,9 +773,9 @@ TEST(ExampleFigures, DefaultStreetSeenFromALowCameraEndsItsChainsOfReflections) 
                               ">povray.log 2>&1";
   ASSERT_EQ(std::system(command.c_str()), 0) << read_text(dir / "povray.log");
   const std::string log = read_text(dir / "povray.log");
-  const int deepest = deepest_ray(log);
-  const long rays = traced_rays(log);
-  std::printf("rows of road 21 m ahead of a camera 1.0 m up: %ld rays, the deepest %d of 20\n",
+  const long deepest = povray_statistic(log, "Max Level:");
+  const long rays = povray_statistic(log, "\nRays:");
+  std::printf("rows of road 21 m ahead of a camera 1.0 m up: %ld rays, the deepest %ld of 20\n",
               rays, deepest);
   fs::remove_all(dir.parent_path());
   EXPECT_GT(deepest, 1) << "POV-Ray's statistics give no Max Level";
