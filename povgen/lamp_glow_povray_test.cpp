@@ -238,5 +238,94 @@ TEST(PovRayLampGlow, WithoutItsConesTheGlowIsTheMistsForwardLobesAlone) {
   fs::remove_all(dir);
 }
 
+// The street's lamps (RT_LightsOnly: their light sources alone) and a slab of scattering media,
+// 1.5 m thick, in the air under the first lamp (its lens at x = 2.6, 5.93 m up, z = 5), seen
+// from across the street; `knobs` declared before the template, `media` whether the slab is
+// there. The slab scatters without extinction, so whatever it adds is light it scatters.
+std::string lit_air_scene(const std::string& knobs, bool media) {
+  return "#version 3.7;\n"
+         "global_settings { assumed_gamma 1 }\n"
+         "#declare RT_CameraPosition = <-6, 3, 5>;\n"
+         "#declare RT_LightsOnly = 1;\n" +
+         knobs +
+         "#include \"night_street.inc\"\n"
+         "camera { perspective location RT_CameraPosition look_at <2.6, 3, 5> angle 30 }\n" +
+         (media ? "box { <1.85, 0.5, 3>, <3.35, 5, 7> hollow pigment { rgbt 1 }\n"
+                  "  interior { media { scattering { 1, 0.05 extinction 0 } samples 4 } } }\n"
+                : "");
+}
+
+// Where the glows draw a lamp's light in the air (RT_LampCones 1, the default), the lamps light
+// no media: the rain medium's single sample a ray lit blotches wherever its midpoint passed a
+// lamp, and its shadow rays cost a fifth of the default's final frame. Where media fog draws
+// the cones (RT_LampCones 0), the lamps light it.
+TEST(PovRayLampGlow, TheLampsLightMediaOnlyWhereTheGlowsDrawNoCones) {
+  SKIP_WITHOUT_POVRAY();
+  const fs::path dir = testing::folder_with_street("povray_test_lamp_media");
+  const std::string options = testing::square_size(kGlowSize) + " -A";
+  const std::string no_cones = "#declare RT_LampCones = 0;\n";
+  const auto render = [&](const std::string& name, const std::string& knobs, bool media) {
+    return testing::trace_linear(dir, name, lit_air_scene(knobs, media), options);
+  };
+  const auto glowing_air = render("glowing_air", "", false);
+  const auto glowing_media = render("glowing_media", "", true);
+  const auto fog_air = render("fog_air", no_cones, false);
+  const auto fog_media = render("fog_media", no_cones, true);
+  for (const auto* image : {&glowing_air, &glowing_media, &fog_air, &fog_media}) {
+    ASSERT_EQ(image->size(), 3u * kGlowSize * kGlowSize);
+  }
+  const int half = kGlowSize / 2;
+  const double lit_by_fog = glow_over(fog_media, fog_air, -half, half - 1, -half, half - 1);
+  const double lit_by_glows =
+      glow_over(glowing_media, glowing_air, -half, half - 1, -half, half - 1);
+  std::printf("media under a lamp: %.6f where fog draws the cones, %.8f where the glows do\n",
+              lit_by_fog, lit_by_glows);
+  EXPECT_GT(lit_by_fog, 1e-3) << "the lamps light no media fog";
+  EXPECT_LT(std::abs(lit_by_glows), 1e-4 * lit_by_fog) << "the lamps light the media";
+  fs::remove_all(dir);
+}
+
+// The rain beyond far_m (RT_RainExtinction) scatters the lamps' light as the mist's forward
+// lobe does, so where the glows draw the lamps' light in the air, they draw the rain's as more
+// of that lobe: σ_rain / RT_LampHaze of the aureole. With the diffraction peak left out, the
+// glow in rain of 0.004 /m and mist of 0.01 /m, aureole share 0.5, is the glow without rain at
+// aureole share 0.9, below the lens and beside it; without cones (media fog lights the rain
+// itself) the rain adds nothing.
+TEST(PovRayLampGlow, TheRainBeyondFarMAddsItsScatteringToTheForwardLobe) {
+  SKIP_WITHOUT_POVRAY();
+  const fs::path dir = testing::folder_with_street("povray_test_lamp_rain");
+  const std::string options = testing::square_size(kGlowSize) + " -A";
+  const std::string mist = "#declare RT_LampHaze = 0.01;\n#declare RT_DiffractionShare = 0;\n";
+  const std::string rain = "#declare RT_RainExtinction = 0.004;\n";
+  const std::string no_cones = "#declare RT_LampCones = 0;\n";
+  const auto render = [&](const std::string& name, const std::string& knobs) {
+    return testing::trace_linear(dir, name, lobes_scene(knobs), options);
+  };
+  const auto background = render("background", "#declare RT_LampHaze = 0;\n");
+  const auto dry = render("dry", mist);
+  const auto wet = render("wet", mist + rain);
+  const auto wider_lobe = render("wider_lobe", mist + "#declare RT_AureoleShare = 0.9;\n");
+  const auto dry_lobes = render("dry_lobes", mist + no_cones);
+  const auto wet_lobes = render("wet_lobes", mist + rain + no_cones);
+  for (const auto* image : {&dry, &wet, &wider_lobe, &dry_lobes, &wet_lobes}) {
+    ASSERT_EQ(image->size(), background.size());
+  }
+  struct Region {
+    const char* name;
+    int row0, row1, column0, column1;
+  };
+  for (const Region& r : {Region{"below", 3, 7, -2, 2}, Region{"beside", -1, 1, 3, 7}}) {
+    const auto glow = [&](const std::vector<float>& image) {
+      return glow_over(image, background, r.row0, r.row1, r.column0, r.column1);
+    };
+    std::printf("%s the lens: dry %.5f, wet %.5f, aureole 0.9 %.5f; without cones %.5f, %.5f\n",
+                r.name, glow(dry), glow(wet), glow(wider_lobe), glow(dry_lobes), glow(wet_lobes));
+    EXPECT_GT(glow(wet), 1.05 * glow(dry)) << r.name << ": the rain adds no light";
+    EXPECT_NEAR(glow(wet) / glow(wider_lobe), 1.0, 0.01) << r.name;
+    EXPECT_NEAR(glow(wet_lobes) / glow(dry_lobes), 1.0, 0.001) << r.name;
+  }
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace raintrace::povgen

@@ -250,6 +250,11 @@ std::string scene_inc_text(const ExportParams& look) {
     text += "#declare RT_GroundFogDepth=" + format_number(look.fog.depth_m) + ";\n";
   }
   text += ground_scene_text(look);
+  // The rain medium's extinction and macros come before the environment, which may draw the
+  // rain's scattering around its lights itself (night_street's lamp glows read
+  // RT_RainExtinction); the medium is placed after it.
+  const std::string medium = rain_medium_text(look);
+  text += medium;
   if (environment_plate_applies(look)) {
     text += environment_with_plate_text(look, aspect);
   } else {
@@ -264,9 +269,7 @@ std::string scene_inc_text(const ExportParams& look) {
   // form (free, without the lights' scattering, 75 % of the medium's effect on the default
   // street) and final the media (+0.6 CPU s a 640×360 frame). Guarded in POV-Ray, so
   // Declare=RT_Preview=0 still renders a preview folder as the final scene.
-  const std::string medium = rain_medium_text(look);
   if (!medium.empty()) {
-    text += medium;
     text += environment_plate_applies(look)
                 ? "#if(!RT_LightsOnly)\nRT_RainMedium()\n#end\n"
                 : "#if(RT_Preview)\nRT_RainFog()\n#else\nRT_RainMedium()\n#end\n";
