@@ -194,6 +194,15 @@ std::string lobes_scene(const std::string& knobs) {
          "RT_LampGlow(<0, 5.88, 0>, <1, 1, 1>)\n";
 }
 
+// Where lobes_scene's glow is measured (20° over 64 pixels at 30.3 m: 0.167 m a pixel), in
+// rows and columns from the lens: below it, rows 3–7; beside it, level with it, 0.5–1.2 m to
+// the right.
+struct Region {
+  const char* name;
+  int row0, row1, column0, column1;
+};
+constexpr Region kLobeRegions[] = {{"below", 3, 7, -2, 2}, {"beside", -1, 1, 3, 7}};
+
 // Media fog scatters the lamps' light to the side itself, in the cones below them, and declares
 // RT_LampCones = 0: the glow is then the forward lobes alone. The sheet's light is the cones'
 // plus the lobes', so the glow without cones and the glow without lobes add up to the whole,
@@ -217,13 +226,7 @@ TEST(PovRayLampGlow, WithoutItsConesTheGlowIsTheMistsForwardLobesAlone) {
   for (const auto* image : {&whole, &lobes, &cones, &nothing}) {
     ASSERT_EQ(image->size(), background.size());
   }
-  // 20° over 64 pixels at 30.3 m: 0.167 m a pixel. Below the lens: rows 3–7; beside it, level
-  // with it, 0.5–1.2 m to the right.
-  struct Region {
-    const char* name;
-    int row0, row1, column0, column1;
-  };
-  for (const Region& r : {Region{"below", 3, 7, -2, 2}, Region{"beside", -1, 1, 3, 7}}) {
+  for (const Region& r : kLobeRegions) {
     const double w = glow_over(whole, background, r.row0, r.row1, r.column0, r.column1);
     const double l = glow_over(lobes, background, r.row0, r.row1, r.column0, r.column1);
     const double c = glow_over(cones, background, r.row0, r.row1, r.column0, r.column1);
@@ -310,11 +313,7 @@ TEST(PovRayLampGlow, TheRainBeyondFarMAddsItsScatteringToTheForwardLobe) {
   for (const auto* image : {&dry, &wet, &wider_lobe, &dry_lobes, &wet_lobes}) {
     ASSERT_EQ(image->size(), background.size());
   }
-  struct Region {
-    const char* name;
-    int row0, row1, column0, column1;
-  };
-  for (const Region& r : {Region{"below", 3, 7, -2, 2}, Region{"beside", -1, 1, 3, 7}}) {
+  for (const Region& r : kLobeRegions) {
     const auto glow = [&](const std::vector<float>& image) {
       return glow_over(image, background, r.row0, r.row1, r.column0, r.column1);
     };
