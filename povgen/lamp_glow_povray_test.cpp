@@ -4,7 +4,9 @@
 // (scene.inc declares RT_GroundFogDensity σ0 and RT_GroundFogDepth d) the fog where the lens
 // stands, POV-Ray's profile σ0 / (1 + (h/d)²) at the lamps' height h = 6 m; without, the
 // rain-soaked city air's 0.01 /m. Part of that light is the mist droplets' diffraction peak, a
-// halo whose angular size is set by the droplets, not by the lamp's distance.
+// halo whose angular size is set by the droplets, not by the lamp's distance. Where the glows
+// draw the lamps' light in the air, the lamps light no media, and the glows draw the share the
+// rain beyond far_m scatters as well.
 #include <gtest/gtest.h>
 
 #include <cmath>
