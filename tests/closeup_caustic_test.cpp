@@ -42,7 +42,7 @@ std::string drop_from_above(bool photons) {
          ";\n"
          "#declare RT_HeroDrops = 0;\n"
          "#include \"closeup.inc\"\n"
-         "RT_Bead(<0, 0, 0>, 0.002)\n"
+         "RT_Bead(<0, 0, 0>, 0.002, 1)\n"
          "camera { orthographic location <0, 0.05, 0> look_at <0, 0, 0> sky z\n"
          "         right x * " +
          std::to_string(kView) + " up z * " + std::to_string(kView) + " }\n";

@@ -212,14 +212,15 @@ TEST(ExampleFigures, ThunderstormBoltBringsTheCameraMoreLightThanTheWholeStreet)
 // closeup: the test card rendered with the drops and without them (RT_HeroDrops=0). The drops'
 // footprint is where the two differ by more than 0.15 in a channel (the card's two colours
 // differ by ~0.8; focal blur at preview samples leaves ±0.05 of grain on the card's edge). The
-// big drop sits in the middle of the frame; the small beads lie outside its columns. In the
+// big drop sits in the middle of the frame; the small beads lie outside its columns (the fine
+// droplets, which lie in them too, are left out: RT_MistDrops=0). In the
 // drop's columns: above the drop's middle row the card is warm, below it blue; inside the drop
 // the order must be the other way round, as a lens that inverts the scene behind it shows it.
 TEST(ExampleFigures, CloseupDropFillsTheFrameAndTurnsTheSceneUpsideDown) {
   if (!have_povray()) GTEST_SKIP() << "povray is not installed";
   const fs::path dir = work_dir("closeup");
   export_example("closeup", dir, "1");
-  const std::string card = "Declare=RT_TestCard=1 Declare=RT_Preview=1";
+  const std::string card = "Declare=RT_TestCard=1 Declare=RT_Preview=1 Declare=RT_MistDrops=0";
   const Image drops = render(dir, "frames/frame_0001.pov", "card_drops", 320, card);
   const Image bare =
       render(dir, "frames/frame_0001.pov", "card_bare", 320, card + " Declare=RT_HeroDrops=0");
@@ -284,6 +285,69 @@ TEST(ExampleFigures, CloseupDropFillsTheFrameAndTurnsTheSceneUpsideDown) {
   EXPECT_LT(inside_upper, -0.25) << "the drop's upper part should show the card's lower half";
   EXPECT_GT(inside_lower, 0.25) << "the drop's lower part should show the card's upper half";
   fs::remove_all(dir.parent_path());
+}
+
+// closeup: the test card at preview with the fine droplets around the beads and without them
+// (RT_MistDrops=0). They are the pixels where the two differ by more than 0.15 in a channel, as
+// for the big drop above: each droplet refracts the card turned over. 400 are scattered over
+// 28 × 9 mm of paint, about a third of them within the frame's 9.9 mm at the drop, the smallest
+// under a pixel (0.03 mm at 320 pixels): there must be dozens of separate spots, none of them
+// more than a few per cent of the big drop's 12 % of the frame, and none joined to the big
+// drop's footprint (they keep 0.6 mm clear of its edge).
+TEST(ExampleFigures, CloseupPaintIsPepperedWithFineDroplets) {
+  if (!have_povray()) GTEST_SKIP() << "povray is not installed";
+  const fs::path dir = work_dir("closeup_droplets");
+  export_example("closeup", dir, "1");
+  const std::string card = "Declare=RT_TestCard=1 Declare=RT_Preview=1";
+  const Image with = render(dir, "frames/frame_0001.pov", "card_mist", 320, card);
+  const Image without =
+      render(dir, "frames/frame_0001.pov", "card_clear", 320, card + " Declare=RT_MistDrops=0");
+  ASSERT_EQ(with.rgb.size(), without.rgb.size());
+  ASSERT_FALSE(with.rgb.empty());
+  const int w = with.width, h = with.height;
+  std::vector<char> spot(static_cast<std::size_t>(w) * h, 0);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const float* a = with.at(x, y);
+      const float* b = without.at(x, y);
+      spot[static_cast<std::size_t>(y) * w + x] =
+          std::max({std::abs(a[0] - b[0]), std::abs(a[1] - b[1]), std::abs(a[2] - b[2])}) > 0.15f;
+    }
+  }
+  // Connected spots (four neighbours), and the largest.
+  int spots = 0;
+  std::size_t largest = 0;
+  std::vector<std::size_t> stack;
+  for (std::size_t start = 0; start < spot.size(); ++start) {
+    if (spot[start] != 1) continue;
+    ++spots;
+    std::size_t size = 0;
+    stack.push_back(start);
+    spot[start] = 2;
+    while (!stack.empty()) {
+      const std::size_t i = stack.back();
+      stack.pop_back();
+      ++size;
+      const int x = static_cast<int>(i % w), y = static_cast<int>(i / w);
+      for (const auto& [dx, dy] :
+           {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+        const int nx = x + dx, ny = y + dy;
+        if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+        const std::size_t n = static_cast<std::size_t>(ny) * w + nx;
+        if (spot[n] == 1) {
+          spot[n] = 2;
+          stack.push_back(n);
+        }
+      }
+    }
+    largest = std::max(largest, size);
+  }
+  std::printf("fine droplets: %d spots, the largest %zu pixels (%.2f %% of the frame)\n", spots,
+              largest, 100.0 * static_cast<double>(largest) / (w * h));
+  fs::remove_all(dir.parent_path());
+  EXPECT_GE(spots, 30) << "too few fine droplets in view";
+  EXPECT_LT(static_cast<double>(largest) / (w * h), 0.03) << "a droplet as big as a bead, or one "
+                                                             "joined to the big drop";
 }
 
 // default: frame 1 rendered with the lamps' haze (night_street's RT_LampHaze, the rain-soaked
