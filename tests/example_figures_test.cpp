@@ -209,13 +209,21 @@ TEST(ExampleFigures, ThunderstormBoltBringsTheCameraMoreLightThanTheWholeStreet)
   fs::remove_all(dir.parent_path());
 }
 
+// Whether closeup's test card rendered two ways differs at (x, y) by more than 0.15 in a
+// channel: the card's two colours differ by ~0.8, and focal blur at preview samples leaves ±0.05
+// of grain on the card's edge.
+bool card_differs(const Image& a, const Image& b, int x, int y) {
+  const float* p = a.at(x, y);
+  const float* q = b.at(x, y);
+  return std::max({std::abs(p[0] - q[0]), std::abs(p[1] - q[1]), std::abs(p[2] - q[2])}) > 0.15f;
+}
+
 // closeup: the test card rendered with the drops and without them (RT_HeroDrops=0). The drops'
-// footprint is where the two differ by more than 0.15 in a channel (the card's two colours
-// differ by ~0.8; focal blur at preview samples leaves ±0.05 of grain on the card's edge). The
-// big drop sits in the middle of the frame; the small beads lie outside its columns (the fine
-// droplets, which lie in them too, are left out: RT_MistDrops=0). In the
-// drop's columns: above the drop's middle row the card is warm, below it blue; inside the drop
-// the order must be the other way round, as a lens that inverts the scene behind it shows it.
+// footprint is where the two differ (card_differs). The big drop sits in the middle of the frame;
+// the small beads lie outside its columns (the fine droplets, which lie in them too, are left out:
+// RT_MistDrops=0). In the drop's columns: above the drop's middle row the card is warm, below it
+// blue; inside the drop the order must be the other way round, as a lens that inverts the scene
+// behind it shows it.
 TEST(ExampleFigures, CloseupDropFillsTheFrameAndTurnsTheSceneUpsideDown) {
   if (!have_povray()) GTEST_SKIP() << "povray is not installed";
   const fs::path dir = work_dir("closeup");
@@ -227,11 +235,7 @@ TEST(ExampleFigures, CloseupDropFillsTheFrameAndTurnsTheSceneUpsideDown) {
   ASSERT_EQ(drops.rgb.size(), bare.rgb.size());
   ASSERT_FALSE(drops.rgb.empty());
   const int w = drops.width, h = drops.height;
-  auto in_drop = [&](int x, int y) {
-    const float* a = drops.at(x, y);
-    const float* b = bare.at(x, y);
-    return std::max({std::abs(a[0] - b[0]), std::abs(a[1] - b[1]), std::abs(a[2] - b[2])}) > 0.15f;
-  };
+  auto in_drop = [&](int x, int y) { return card_differs(drops, bare, x, y); };
   // Warm minus blue: > 0 on the card's upper half, < 0 on its lower half.
   auto warmth = [](const float* p) { return p[0] - p[2]; };
 
@@ -288,12 +292,12 @@ TEST(ExampleFigures, CloseupDropFillsTheFrameAndTurnsTheSceneUpsideDown) {
 }
 
 // closeup: the test card at preview with the fine droplets around the beads and without them
-// (RT_MistDrops=0). They are the pixels where the two differ by more than 0.15 in a channel, as
-// for the big drop above: each droplet refracts the card turned over. 400 are scattered over
-// 28 × 9 mm of paint, about a third of them within the frame's 9.9 mm at the drop, the smallest
-// under a pixel (0.03 mm at 320 pixels): there must be dozens of separate spots, none of them
-// more than a few per cent of the big drop's 12 % of the frame, and none joined to the big
-// drop's footprint (they keep 0.6 mm clear of its edge).
+// (RT_MistDrops=0). They are the pixels where the two differ (card_differs), as for the big drop
+// above: each droplet refracts the card turned over. 400 are scattered over 28 × 9 mm of paint,
+// about a third of them within the frame's 9.9 mm at the drop, the smallest under a pixel (0.03
+// mm at 320 pixels): there must be dozens of separate spots, none of them more than a few per
+// cent of the big drop's 12 % of the frame, and none joined to the big drop's footprint (they
+// keep 0.6 mm clear of its edge).
 TEST(ExampleFigures, CloseupPaintIsPepperedWithFineDroplets) {
   if (!have_povray()) GTEST_SKIP() << "povray is not installed";
   const fs::path dir = work_dir("closeup_droplets");
@@ -308,10 +312,7 @@ TEST(ExampleFigures, CloseupPaintIsPepperedWithFineDroplets) {
   std::vector<char> spot(static_cast<std::size_t>(w) * h, 0);
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
-      const float* a = with.at(x, y);
-      const float* b = without.at(x, y);
-      spot[static_cast<std::size_t>(y) * w + x] =
-          std::max({std::abs(a[0] - b[0]), std::abs(a[1] - b[1]), std::abs(a[2] - b[2])}) > 0.15f;
+      spot[static_cast<std::size_t>(y) * w + x] = card_differs(with, without, x, y);
     }
   }
   // Connected spots (four neighbours), and the largest.
