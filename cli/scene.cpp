@@ -97,6 +97,15 @@ void check_aperture_blades(const TableReader& r, const Scene& scene) {
   }
 }
 
+/// The lens barrel's rim clips the rays a traced focal blur spreads over the opening; a pinhole,
+/// or rain blurred without tracing, has no such rays to clip.
+void check_optical_vignetting(const TableReader& r, const Scene& scene) {
+  if (scene.look.optical_vignetting > 0.0 && !povgen::traces_focal_blur(scene.look)) {
+    r.fail("optical_vignetting",
+           "needs a traced focal blur: camera.aperture_m > 0 and camera.focal_blur = \"traced\"");
+  }
+}
+
 /// A white balance is a colour temperature on the Planckian locus, or off.
 void check_white_balance(const TableReader& r, const Scene& scene) {
   const double kelvin = scene.develop.white_balance_k;
@@ -177,6 +186,7 @@ void read_section(TableReader& r, Scene& scene) {
   if (section == "camera") {
     check_camera(r, scene.sim.camera);
     check_aperture_blades(r, scene);
+    check_optical_vignetting(r, scene);
     check_white_balance(r, scene);
   }
   if (section == "wind") normalise_gust_direction(r, scene.sim.wind);

@@ -105,8 +105,11 @@ std::vector<Probe> probes() {
             text = fmt::format("[{}, {}, {}]", value, v.y, v.z);
           }
           if (!row.section.empty()) probe.toml = fmt::format("[{}]\n", row.section);
-          // Blades need an opening (a rule between two keys, which the tables do not hold).
-          if (row.key == "aperture_blades") probe.toml += "aperture_m = 0.008\n";
+          // Blades and the barrel's rim need an opening (rules between two keys, which the
+          // tables do not hold).
+          if (row.key == "aperture_blades" || row.key == "optical_vignetting") {
+            probe.toml += "aperture_m = 0.008\n";
+          }
           probe.toml += probe.key + " = " + text + "\n";
           out.push_back(probe);
         }

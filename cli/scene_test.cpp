@@ -368,6 +368,20 @@ TEST(SceneErrors, CrossFieldRules) {
             "t.toml:2:19: camera.aperture_blades: needs camera.aperture_m > 0: the spikes' length "
             "comes from the opening's size");
   EXPECT_EQ(load("[camera]\naperture_m = 0.008\naperture_blades = 6\n").develop.aperture_blades, 6);
+  // The lens barrel's rim clips a traced focal blur's rays: none without an opening, none when
+  // only the rain is blurred.
+  EXPECT_EQ(error_of("[camera]\noptical_vignetting = 0.5\n"),
+            "t.toml:2:22: camera.optical_vignetting: needs a traced focal blur: camera.aperture_m "
+            "> 0 and camera.focal_blur = \"traced\"");
+  EXPECT_EQ(error_of("[camera]\naperture_m = 0.008\nfocal_blur = \"rain\"\n"
+                     "optical_vignetting = 0.5\n"),
+            "t.toml:4:22: camera.optical_vignetting: needs a traced focal blur: camera.aperture_m "
+            "> 0 and camera.focal_blur = \"traced\"");
+  EXPECT_EQ(error_of("[camera]\naperture_m = 0.008\noptical_vignetting = 1.5\n"),
+            "t.toml:3:22: camera.optical_vignetting: must be in [0, 1], got 1.5");
+  EXPECT_EQ(
+      load("[camera]\naperture_m = 0.008\noptical_vignetting = 0.5\n").look.optical_vignetting,
+      0.5);
   // A white balance: off, or a colour temperature the blackbody fit covers.
   EXPECT_EQ(error_of("[camera]\nwhite_balance_k = 1500\n"),
             "t.toml:2:19: camera.white_balance_k: must be 0 (off: D65 white, the colours as "

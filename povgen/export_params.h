@@ -114,6 +114,11 @@ struct ExportParams {
   double aperture_m = 0.0;
   /// What aperture_m blurs: everything, traced by POV-Ray, or the rain alone, drawn blurred.
   FocalBlur focal_blur = FocalBlur::traced;
+  /// The lens barrel's rim clipping the opening toward the corners (lens_barrel.h): the
+  /// out-of-focus discs become cat's eyes, half of the opening cut at the corners, the cut
+  /// starting (1 − optical_vignetting) of the way out from the centre. 0 = none. Needs a traced
+  /// focal blur.
+  double optical_vignetting = 0.0;
   /// The rain as simulated (cli/ copies it from the scene, like the camera): its drop sizes and
   /// rate give the rain medium beyond rain.far_m (rain_medium_text()).
   sim::RainParams rain;
@@ -164,12 +169,14 @@ struct ExportParams {
   double lightning_light = 8.0;
 };
 
-/// ExportParams' own keys, in four sections: [camera] aperture_m and focal_blur, [output] (after
-/// cli's `frames`), [export] and [lightning] light. Its camera is sim::kCameraParams, fog and
-/// environment their own tables.
+/// ExportParams' own keys, in four sections: [camera] aperture_m, focal_blur and
+/// optical_vignetting, [output] (after cli's `frames`), [export] and [lightning] light. Its
+/// camera is sim::kCameraParams, fog and environment their own tables.
 inline constexpr sim::Param<ExportParams> kExportParams[] = {
     sim::number("camera", "aperture_m", &ExportParams::aperture_m, "m", sim::Range::closed(0, 1)),
     sim::choice<&ExportParams::focal_blur>("camera", "focal_blur", kFocalBlurNames),
+    sim::number("camera", "optical_vignetting", &ExportParams::optical_vignetting, "share",
+                sim::Range::closed(0, 1)),
     sim::number("output", "fps", &ExportParams::fps, "1/s", sim::Range::open_closed(0, 240)),
     sim::integer("output", "width", &ExportParams::width, "pixels", 16, 8192),
     sim::integer("output", "height", &ExportParams::height, "pixels", 16, 8192),

@@ -8,6 +8,7 @@
 
 #include "povgen/frame_text.h"
 #include "povgen/ground_scene.h"
+#include "povgen/lens_barrel.h"
 #include "povgen/number_format.h"
 #include "povgen/rain_look.h"
 #include "povgen/templates.h"
@@ -180,7 +181,11 @@ bool environment_plate_applies(const ExportParams& look) {
       look.environment.include_path.empty() &&
       (look.environment.name == "night_street" || look.environment.name == "field");
   const bool fog = look.fog.mode != FogMode::off && look.fog.density_per_m > 0.0;
-  return look.quality == Quality::preview && look.environment_plate && scenery_beyond_rain && !fog;
+  // The plate is the camera's picture, already through the lens barrel's rim: a frame's rays
+  // to it would pass the rim a second time.
+  const bool barrel = look.optical_vignetting > 0.0;
+  return look.quality == Quality::preview && look.environment_plate && scenery_beyond_rain &&
+         !fog && !barrel;
 }
 
 std::string plate_pov_text() {
@@ -232,6 +237,7 @@ std::string scene_inc_text(const ExportParams& look) {
   text += "#declare RT_CameraPosition=" + format_vector(look.camera.position) + ";\n";
   text += "#ifndef(RT_LightsOnly) #declare RT_LightsOnly=0; #end\n";
   text += "#if(RT_Mask)\nbackground{rgb 0}\n#else\n";
+  text += lens_barrel_text(look);
   text += "#declare RT_KeyLight=1;\n";
   if (look.fog.mode == FogMode::media && look.fog.density_per_m > 0.0) {
     // Media mist scatters the lamps' light to the side itself, so night_street paints no cones.

@@ -26,8 +26,8 @@ std::string scene_inc_text(const ExportParams& look);
 
 /// Whether frames may draw the environment plate: quality preview, look.environment_plate,
 /// a built-in environment whose scenery all lies beyond the rain (night_street, field; not
-/// closeup, whose backdrop wall stands inside it) and no fog (fog in the plate would be counted
-/// again on the way to it).
+/// closeup, whose backdrop wall stands inside it), no fog (fog in the plate would be counted
+/// again on the way to it) and no lens barrel (optical_vignetting: likewise).
 bool environment_plate_applies(const ExportParams& look);
 
 /// plate.pov: the environment alone (scene.inc with RT_NoPlate=1, no rain).
