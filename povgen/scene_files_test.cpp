@@ -245,6 +245,11 @@ TEST(SceneFiles, EnvironmentPlateOnlyWhereItStandsInFaithfully) {
   refused([](ExportParams& l) { l.environment.include_path = "mine.inc"; });
   refused([](ExportParams& l) { l.fog.mode = FogMode::ground; });
   refused([](ExportParams& l) { l.fog.mode = FogMode::media; });
+  // The plate went through the lens barrel's rim already; the frames' rays would pass it again.
+  refused([](ExportParams& l) {
+    l.aperture_m = 0.01;
+    l.optical_vignetting = 0.5;
+  });
   // Fog with density 0 is no fog: the plate applies again.
   ExportParams clear;
   clear.fog.mode = FogMode::media;
