@@ -72,10 +72,12 @@ inline constexpr sim::Param<film::DevelopSettings> kDevelopParams[] = {
 static_assert(sim::well_formed<film::DevelopSettings>(kDevelopParams));
 
 /// The scene as far as it shapes the rendered (HDR) frames, as text: every key of every table
-/// with its value as loaded (defaults included; comments, order and spelling of the file do not
-/// matter), except the keys that do not change a rendered frame or that the folder's identity
-/// holds apart: the develop keys above, `seed`, [output] frames, width, height, fps, quality and
-/// [export] mask. Its hash is the scene_hash of an output folder (docs/output-folder.md).
+/// whose value as loaded differs from the built-in default (comments, order and spelling of the
+/// file do not matter, nor does a key that a later raintrace adds while the scene leaves it at
+/// its default), except the keys that do not change a rendered frame or that the folder's
+/// identity holds apart: the develop keys above, `seed`, [output] frames, width, height, fps,
+/// quality and [export] mask. Its hash is the scene_hash of an output folder
+/// (docs/output-folder.md).
 std::string canonical_scene_text(const Scene& scene);
 
 /// Reads and validates a scene file. Throws SceneError (also for a missing/unreadable file).

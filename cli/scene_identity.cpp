@@ -1,11 +1,16 @@
 // The scene's canonical form: what decides whether an output folder holds this scene's frames.
 // A folder used to be tied to the scene file's bytes, so a comment, or a develop-only key such
-// as exposure_ev, made it "another scene"; the loaded values decide instead.
+// as exposure_ev, made it "another scene"; the loaded values decide instead. Keys at their
+// built-in defaults are left out too: a later raintrace that adds a key adds no line for the
+// scenes that do not set it, so their folders stay theirs and their finished frames are kept
+// (the frames' own input hashes still catch any change to what POV-Ray reads).
 #include <fmt/core.h>
+#include <set>
 #include <string>
 #include <string_view>
 #include <type_traits>
 #include <variant>
+#include <vector>
 
 #include "cli/scene.h"
 #include "cli/scene_tables.h"
@@ -50,10 +55,10 @@ std::string value_text(const sim::Param<P>& row, const P& object) {
       row.field);
 }
 
-}  // namespace
-
-std::string canonical_scene_text(const Scene& scene) {
-  std::string text = "raintrace scene, canonical form 1\n";
+/// Every `section.key=value` line of scene's tables that can shape a rendered frame, in the
+/// tables' order.
+std::vector<std::string> key_lines(const Scene& scene) {
+  std::vector<std::string> lines;
   for_each_table(scene, [&](auto table, const auto& object) {
     using P = std::remove_cvref_t<decltype(object)>;
     if constexpr (std::is_same_v<P, film::DevelopSettings>) {
@@ -61,10 +66,22 @@ std::string canonical_scene_text(const Scene& scene) {
     } else {
       for (const sim::Param<P>& row : table) {
         const std::string key = sim::full_key(row.section, row.key);
-        if (!left_out(key)) text += key + "=" + value_text(row, object) + "\n";
+        if (!left_out(key)) lines.push_back(key + "=" + value_text(row, object));
       }
     }
   });
+  return lines;
+}
+
+}  // namespace
+
+std::string canonical_scene_text(const Scene& scene) {
+  const std::vector<std::string> defaults = key_lines(Scene{});
+  const std::set<std::string> at_default(defaults.begin(), defaults.end());
+  std::string text = "raintrace scene, canonical form 2\n";
+  for (const std::string& line : key_lines(scene)) {
+    if (at_default.count(line) == 0) text += line + "\n";
+  }
   return text;
 }
 

@@ -444,5 +444,23 @@ TEST(LoadSceneFile, ReadsTheFileAndResolvesIncludesBesideIt) {
   fs::remove_all(dir);
 }
 
+// An output folder's identity (canonical_scene_text): the loaded values that shape a rendered
+// frame and differ from the built-in defaults. A key a later raintrace adds, left at its default,
+// must not make an old scene "another scene" and cost it its finished frames.
+TEST(SceneIdentity, KeysAtTheirDefaultsAndDevelopKeysAddNothing) {
+  const std::string plain = canonical_scene_text(load(""));
+  EXPECT_EQ(plain.rfind("raintrace scene, canonical form 2\n", 0), 0u) << plain;
+  EXPECT_EQ(canonical_scene_text(load("[camera]\noptical_vignetting = 0\n")), plain);
+  EXPECT_EQ(canonical_scene_text(load("[rain]\nrate_mm_per_h = 5e0\n")),
+            canonical_scene_text(load("[rain]\nrate_mm_per_h = 5\n")));
+  EXPECT_EQ(canonical_scene_text(load("[camera]\nexposure_ev = -1\nvignette = 1\n")), plain);
+  EXPECT_EQ(canonical_scene_text(load("seed = 7\n[output]\nwidth = 320\n")), plain);
+  // A key away from its default is a line of its own, and another scene.
+  const std::string open = canonical_scene_text(load("[camera]\naperture_m = 0.01\n"));
+  EXPECT_NE(open, plain);
+  EXPECT_NE(open.find("\ncamera.aperture_m=0.01\n"), std::string::npos) << open;
+  EXPECT_EQ(plain.find("camera.aperture_m"), std::string::npos) << plain;
+}
+
 }  // namespace
 }  // namespace raintrace::cli
