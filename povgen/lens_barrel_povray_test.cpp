@@ -17,14 +17,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int kPixels = 200;
-constexpr double kLightDepth = 10.0;  // m; the focus is at 1 m
-constexpr double kFieldShare = 0.8;   // the corner's light: 0.8 of the way out along the diagonal
+constexpr int kBarrelPixels = 200;
+constexpr double kBarrelLightDepth = 10.0;  // m; the focus is at 1 m
+constexpr double kFieldShare = 0.8;  // the corner's light: 0.8 of the way out along the diagonal
 
 /// A square 20° camera at the origin looking along +z, focused at 1 m through a 4 cm opening.
 ExportParams square_look(double optical_vignetting) {
   ExportParams look;
-  look.width = look.height = kPixels;
+  look.width = look.height = kBarrelPixels;
   look.quality = Quality::final;
   look.camera.position = {0.0, 0.0, 0.0};
   look.camera.look_at = {0.0, 0.0, 1.0};
@@ -43,24 +43,24 @@ std::string two_lights_scene(const ExportParams& look) {
   const std::string light = " 0.02 pigment{rgb 1} finish{ambient 0 diffuse 0 emission 1}}\n";
   return "#version 3.7;\nglobal_settings{assumed_gamma 1}\n" +
          inc.substr(camera, inc.find('\n', camera) - camera) + "\n" + lens_barrel_text(look) +
-         "sphere{<0,0," + std::to_string(kLightDepth) + ">," + light + "sphere{<" +
-         std::to_string(t * kLightDepth) + "," + std::to_string(t * kLightDepth) + "," +
-         std::to_string(kLightDepth) + ">," + light;
+         "sphere{<0,0," + std::to_string(kBarrelLightDepth) + ">," + light + "sphere{<" +
+         std::to_string(t * kBarrelLightDepth) + "," + std::to_string(t * kBarrelLightDepth) + "," +
+         std::to_string(kBarrelLightDepth) + ">," + light;
 }
 
 /// A window's light and how it spreads along the diagonal toward the centre and across it.
-struct Blob {
+struct DiscMoments {
   double light = 0.0;
   double radial_sd = 0.0;  // along (1, −1)/√2 in pixels, x right and y down: toward the corner
   double across_sd = 0.0;  // along (1, 1)/√2
 };
 
-Blob blob_in(const std::vector<float>& px, int x0, int y0, int size) {
-  Blob b;
+DiscMoments disc_moments_in(const std::vector<float>& px, int x0, int y0, int size) {
+  DiscMoments b;
   double sx = 0.0, sy = 0.0;
   for (int y = y0; y < y0 + size; ++y) {
     for (int x = x0; x < x0 + size; ++x) {
-      const double v = px[3 * (y * kPixels + x) + 1];
+      const double v = px[3 * (y * kBarrelPixels + x) + 1];
       b.light += v;
       sx += v * x;
       sy += v * y;
@@ -70,7 +70,7 @@ Blob blob_in(const std::vector<float>& px, int x0, int y0, int size) {
   double radial = 0.0, across = 0.0;
   for (int y = y0; y < y0 + size; ++y) {
     for (int x = x0; x < x0 + size; ++x) {
-      const double v = px[3 * (y * kPixels + x) + 1];
+      const double v = px[3 * (y * kBarrelPixels + x) + 1];
       const double r = ((x - cx) - (y - cy)) / std::sqrt(2.0);
       const double a = ((x - cx) + (y - cy)) / std::sqrt(2.0);
       radial += v * r * r;
@@ -85,12 +85,12 @@ Blob blob_in(const std::vector<float>& px, int x0, int y0, int size) {
 /// What the geometry says of the corner's disc: the share of the opening whose rays toward the
 /// light pass the hole, and that part's spread along the diagonal over its spread across, from
 /// the opening sampled on a fine grid.
-struct Expected {
+struct RimGeometry {
   double share = 0.0;
   double radial_over_across = 0.0;
 };
 
-Expected expected_corner_disc(const ExportParams& look) {
+RimGeometry expected_corner_disc(const ExportParams& look) {
   const LensBarrel barrel = lens_barrel(look);
   const double opening_radius = look.aperture_m / 2.0;
   const double t = kFieldShare * half_diagonal_tan(look);  // the light's direction, along u
@@ -102,8 +102,8 @@ Expected expected_corner_disc(const ExportParams& look) {
       const double v = opening_radius * (2.0 * j / (n - 1) - 1.0);
       if (u * u + v * v > opening_radius * opening_radius) continue;
       all += 1.0;
-      // The ray from (u, v) on the opening to the light at depth kLightDepth, at the rim.
-      const double at = barrel.distance_m / kLightDepth;
+      // The ray from (u, v) on the opening to the light at depth kBarrelLightDepth, at the rim.
+      const double at = barrel.distance_m / kBarrelLightDepth;
       const double ru = u * (1.0 - at) + t * barrel.distance_m, rv = v * (1.0 - at);
       if (ru * ru + rv * rv > barrel.hole_radius_m * barrel.hole_radius_m) continue;
       kept += 1.0;
@@ -120,18 +120,18 @@ Expected expected_corner_disc(const ExportParams& look) {
 TEST(PovRayLensBarrel, ACornersDiscOutOfFocusIsACatsEyeWithTheLightThroughTheHole) {
   SKIP_WITHOUT_POVRAY();
   const fs::path dir = testing::empty_scratch_folder("povray_test_lens_barrel");
-  const std::string size = testing::square_size(kPixels) + " -A";
+  const std::string size = testing::square_size(kBarrelPixels) + " -A";
   const auto open = testing::trace_linear(dir, "open", two_lights_scene(square_look(0.0)), size);
   const auto rim = testing::trace_linear(dir, "rim", two_lights_scene(square_look(0.5)), size);
-  ASSERT_EQ(open.size(), std::size_t{3 * kPixels * kPixels});
+  ASSERT_EQ(open.size(), std::size_t{3 * kBarrelPixels * kBarrelPixels});
   ASSERT_EQ(rim.size(), open.size());
 
   // The corner's light lands about (180, 20); its disc is ~20 pixels across.
-  const Blob corner_open = blob_in(open, 156, 0, 44);
-  const Blob corner_rim = blob_in(rim, 156, 0, 44);
-  const Blob middle_open = blob_in(open, 78, 78, 44);
-  const Blob middle_rim = blob_in(rim, 78, 78, 44);
-  const Expected expected = expected_corner_disc(square_look(0.5));
+  const DiscMoments corner_open = disc_moments_in(open, 156, 0, 44);
+  const DiscMoments corner_rim = disc_moments_in(rim, 156, 0, 44);
+  const DiscMoments middle_open = disc_moments_in(open, 78, 78, 44);
+  const DiscMoments middle_rim = disc_moments_in(rim, 78, 78, 44);
+  const RimGeometry expected = expected_corner_disc(square_look(0.5));
 
   // Round without the rim (to the few per cent the light's own ball, seen off the axis, adds).
   const double open_shape = corner_open.radial_sd / corner_open.across_sd;

@@ -26,8 +26,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int kWidth = 720;  // the view from the surface, equirectangular: 0.5° a pixel
-constexpr int kHeight = 360;
+constexpr int kSkyWidth = 720;  // the view from the surface, equirectangular: 0.5° a pixel
+constexpr int kSkyHeight = 360;
 
 // `preamble` (declarations and the environment's #include) seen by a spherical camera at
 // `location`, looking along +z; `sky` false blacks out the sky, so the two pictures differ by
@@ -49,13 +49,13 @@ struct SkyFill {
 SkyFill measure_sky_fill(const fs::path& dir, const std::string& preamble,
                          const std::string& location) {
   const std::string options =
-      "+W" + std::to_string(kWidth) + " +H" + std::to_string(kHeight) + " -A";
+      "+W" + std::to_string(kSkyWidth) + " +H" + std::to_string(kSkyHeight) + " -A";
   const std::vector<float> with =
       testing::trace_linear(dir, "sky", view_from(preamble, location, true), options);
   const std::vector<float> without =
       testing::trace_linear(dir, "dark", view_from(preamble, location, false), options);
   SkyFill measured;
-  if (with.size() != 3u * kWidth * kHeight || without.size() != with.size()) {
+  if (with.size() != 3u * kSkyWidth * kSkyHeight || without.size() != with.size()) {
     ADD_FAILURE() << "no picture of the sky";
     return measured;
   }
@@ -69,13 +69,13 @@ SkyFill measure_sky_fill(const fs::path& dir, const std::string& preamble,
 
   // Row r looks at elevation 90° − (r + 0.5)·180°/H; a pixel covers cos(elevation)·dλ·dφ of
   // the sphere, and a horizontal surface weights it by sin(elevation).
-  const double step = M_PI / kHeight;
+  const double step = M_PI / kSkyHeight;
   measured.irradiance = 0.0;
-  for (int row = 0; row < kHeight / 2; ++row) {
+  for (int row = 0; row < kSkyHeight / 2; ++row) {
     const double elevation = M_PI / 2 - (row + 0.5) * step;
     const double weight = std::cos(elevation) * std::sin(elevation) * step * step / M_PI;
-    for (int column = 0; column < kWidth; ++column) {
-      const std::size_t i = 3u * (static_cast<std::size_t>(row) * kWidth + column);
+    for (int column = 0; column < kSkyWidth; ++column) {
+      const std::size_t i = 3u * (static_cast<std::size_t>(row) * kSkyWidth + column);
       measured.irradiance +=
           weight * (0.2126 * (with[i] - without[i]) + 0.7152 * (with[i + 1] - without[i + 1]) +
                     0.0722 * (with[i + 2] - without[i + 2]));
