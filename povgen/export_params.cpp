@@ -9,6 +9,14 @@
 
 namespace raintrace::povgen {
 
+void check_optical_vignetting(const ExportParams& look) {
+  if (look.optical_vignetting > 0.0 && !traces_focal_blur(look)) {
+    throw std::invalid_argument(
+        "camera: optical_vignetting needs a traced focal blur (aperture_m > 0, focal_blur = "
+        "\"traced\")");
+  }
+}
+
 void validate(const ExportParams& look) {
   sim::validate(look.camera);
   sim::check_params<ExportParams>(kExportParams, look);
@@ -18,11 +26,7 @@ void validate(const ExportParams& look) {
   sim::check_params<sim::RainParams>(sim::kRainParams, look.rain);
   sim::check_params<sim::PuddleParams>(sim::kPuddleParams, look.ground.puddles);
   sim::check_params<sim::RippleParams>(sim::kRippleParams, look.ground.ripples);
-  if (look.optical_vignetting > 0.0 && !traces_focal_blur(look)) {
-    throw std::invalid_argument(
-        "camera: optical_vignetting needs a traced focal blur (aperture_m > 0, focal_blur = "
-        "\"traced\")");
-  }
+  check_optical_vignetting(look);
   if (!std::isfinite(look.ground.ground_y_m)) {
     throw std::invalid_argument("ground: ground_y_m must be finite");
   }

@@ -206,6 +206,11 @@ inline bool blurs_rain_only(const ExportParams& look) {
   return look.aperture_m > 0.0 && look.focal_blur == FocalBlur::rain;
 }
 
+/// Throws std::invalid_argument when optical_vignetting is set without a traced focal blur: the
+/// lens barrel's rim clips the rays POV-Ray spreads over the opening, which a pinhole or a blur
+/// of the rain alone does not trace.
+void check_optical_vignetting(const ExportParams& look);
+
 /// Throws std::invalid_argument naming the first field out of its range (the tables above and
 /// sim::kCameraParams), or an environment that is not built in when no include is given.
 void validate(const ExportParams& look);

@@ -17,11 +17,10 @@ double half_diagonal_tan(const ExportParams& look) {
 }
 
 LensBarrel lens_barrel(const ExportParams& look) {
-  if (!(look.optical_vignetting > 0.0) || !traces_focal_blur(look)) {
-    throw std::invalid_argument(
-        "camera: optical_vignetting needs a traced focal blur (aperture_m > 0, focal_blur = "
-        "\"traced\")");
+  if (!(look.optical_vignetting > 0.0)) {
+    throw std::invalid_argument("lens_barrel: optical_vignetting is 0, so there is no rim");
   }
+  check_optical_vignetting(look);
   // POV-Ray's `aperture` is twice aperture_m (scene_files.cpp): the opening's radius is half
   // of aperture_m.
   const double opening_radius = look.aperture_m / 2.0;
