@@ -416,7 +416,8 @@ TEST(ExampleFigures, DefaultStreetSignalsGlowInTheMist) {
 // small curved mirrors: where the smooth car shows one broad highlight or none, the beaded one
 // sends the lamps' glints to the camera from many points — pixels of the two nearest cars at
 // least 0.05 brighter (linear; their body is ~0.02-0.05) with the beads than without. Measured:
-// 7 of 9100 on the paint since the kebab house's lit sign, which the beads mirror too, became
+// 19 of 9100 on 2026-12-06, before and after the kebab house's sign became ANTALYA GRILL; 7 of
+// 9100 on the paint since the kebab house's lit sign, which the beads mirror too, became
 // the shorter KEBABS (33f6cd6); 13 before it; 27 while the sheets standing for the wet road's
 // glossy streaks, which the beads mirror too, carried each streetlight's lens unforeshortened
 // (3–6 times too bright); before that 22 when the beads covered all the paint (they stand in
@@ -466,8 +467,9 @@ TEST(ExampleFigures, DefaultStreetRoadMirrorsTheTrafficSignalsColour) {
 // pixel can only get brighter where the water mirrors something lit above it: the shop windows
 // and fascias, the pharmacy's cross. Over the left pavement (x 0–220, y 184–294 of 640×360)
 // at least 40 pixels must be brighter by 0.005 (linear; the slabs there are ~0.02–0.04).
-// Measured: 75 (92 while the puddles saw each lamp's lens twice, the lens at full light and its
-// streak); with the water's reflection taken out, 0.
+// Measured: 1436 on 2026-12-06; 75 when this test was written (92 while the puddles saw each
+// lamp's lens twice, the lens at full light and its streak); with the water's reflection taken
+// out, 0.
 TEST(ExampleFigures, DefaultPavementPuddlesMirrorTheLitShops) {
   if (!have_povray()) GTEST_SKIP() << "povray is not installed";
   const auto [water, slabs] =
@@ -484,10 +486,10 @@ TEST(ExampleFigures, DefaultPavementPuddlesMirrorTheLitShops) {
 // only (0). Seen at 60–80° from their normal the panes reflect 7–40 % of the wet street, the
 // lamps and the facades opposite, over the lit interior: the interior only ever gains light.
 // Over the two shop windows in view (x 110–150 and 545–640, y 115–200 of 640×360) at least 900
-// pixels must be brighter by 0.005 (linear), and hardly any darker. Measured: 1167 brighter, 0
-// darker; 1574 and 1 (a rain streak's antialiasing) while the glass saw each lamp's lens twice,
-// the lens at full light and its streak; 1837 and 1 while the lamps' haze, which the glass
-// mirrors too, was twice that.
+// pixels must be brighter by 0.005 (linear), and hardly any darker. Measured: 2056 brighter, 15
+// darker on 2026-12-06; 1167 and 0 when this test was written; 1574 and 1 (a rain streak's
+// antialiasing) while the glass saw each lamp's lens twice, the lens at full light and its streak;
+// 1837 and 1 while the lamps' haze, which the glass mirrors too, was twice that.
 TEST(ExampleFigures, DefaultStreetShopWindowsMirrorTheStreet) {
   if (!have_povray()) GTEST_SKIP() << "povray is not installed";
   const auto [mirror, clear] =
