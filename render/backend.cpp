@@ -26,9 +26,13 @@ RunnerCallbacks folder_callbacks(output::FolderState& folder, ProgressReporter& 
                                  const std::function<void(const FrameFailure&)>& on_failed,
                                  std::function<void(int frame)> develop) {
   RunnerCallbacks callbacks;
-  callbacks.on_started = [&folder](const RenderJob& job) { folder.rendering(job.pass, job.span); };
+  callbacks.on_started = [&folder, &reporter](const RenderJob& job) {
+    folder.rendering(job.pass, job.span);
+    reporter.picture_started(job.pass, job.span);
+  };
   callbacks.on_rendered = [&folder, &reporter, develop](Pass pass, int frame, double seconds) {
     folder.rendered(pass, frame, seconds);
+    reporter.picture_traced(pass, frame);
     if (pass == Pass::image) {
       const auto* f = folder.find(frame);
       if (f != nullptr && f->image.status == output::FrameStatus::rendered && develop) {
@@ -41,6 +45,7 @@ RunnerCallbacks folder_callbacks(output::FolderState& folder, ProgressReporter& 
   };
   callbacks.on_failed = [&folder, &reporter, &summary, on_failed](const FrameFailure& failure) {
     folder.failed(failure.pass, failure.frame, failure.summary());
+    reporter.picture_failed(failure.pass, failure.frame);
     ++reporter.progress().failed;
     summary.failures.push_back(failure);
     if (on_failed) on_failed(failure);

@@ -139,6 +139,7 @@ RenderSummary render_local(FolderState& folder, const LocalRenderSettings& setti
 
   RenderSummary summary;
   ProgressReporter reporter{settings.on_progress};
+  reporter.follow_pace();
   auto& progress = reporter.progress();
   RunnerSettings runner;
   runner.jobs = jobs;

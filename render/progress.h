@@ -4,6 +4,9 @@
 
 #include <chrono>
 #include <functional>
+#include <optional>
+
+#include "render/render_pace.h"
 
 namespace raintrace::render {
 
@@ -17,7 +20,9 @@ struct RenderProgress {
   int failed = 0;
   int skipped = 0;  ///< frames already up to date before the run
   double elapsed_seconds = 0.0;
-  /// Estimated seconds left from the rate so far; negative while unknown.
+  /// Estimated seconds left: from the POV-Ray processes' pace where the reporter follows it
+  /// (ProgressReporter::follow_pace), else from the rate of finished pictures; negative while
+  /// unknown.
   double eta_seconds = -1.0;
   int exported = 0;      ///< frames exported so far in this run (while exporting)
   int export_total = 0;  ///< frames this run exports; 0 when rendering an exported folder
@@ -32,19 +37,27 @@ class ProgressReporter {
   RenderProgress& progress() { return m_progress; }
   [[nodiscard]] const RenderProgress& progress() const { return m_progress; }
 
-  /// Updates elapsed time and ETA (from the pace of finished pictures) and calls the callback.
-  void report() {
-    auto& p = m_progress;
-    p.elapsed_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
-    const int finished = p.done + p.failed;
-    p.eta_seconds = finished > 0 ? p.elapsed_seconds / finished * (p.total - finished) : -1.0;
-    if (m_on_progress) m_on_progress(p);
+  /// From now on the ETA follows the pace of the POV-Ray processes (render_pace.h), as the
+  /// picture_… calls tell it; otherwise it is the rate of finished pictures.
+  void follow_pace() { m_pace.emplace(Clock::now()); }
+  void picture_started(Pass pass, const FrameSpan& span) {
+    if (m_pace) m_pace->started(pass, span, Clock::now());
+  }
+  void picture_traced(Pass pass, int frame) {
+    if (m_pace) m_pace->finished(pass, frame, Clock::now());
+  }
+  void picture_failed(Pass pass, int frame) {
+    if (m_pace) m_pace->failed(pass, frame, Clock::now());
   }
 
+  /// Updates elapsed time and ETA and calls the callback.
+  void report();
+
  private:
+  using Clock = std::chrono::steady_clock;
   std::function<void(const RenderProgress&)> m_on_progress;
-  std::chrono::steady_clock::time_point m_start = std::chrono::steady_clock::now();
+  Clock::time_point m_start = Clock::now();
+  std::optional<RenderPace> m_pace;
   RenderProgress m_progress;
 };
 
