@@ -28,7 +28,7 @@ RunnerCallbacks folder_callbacks(output::FolderState& folder, ProgressReporter& 
   RunnerCallbacks callbacks;
   callbacks.on_started = [&folder, &reporter](const RenderJob& job) {
     folder.rendering(job.pass, job.span);
-    reporter.picture_started(job.pass, job.span);
+    reporter.span_started(job.pass, job.span);
   };
   callbacks.on_rendered = [&folder, &reporter, develop](Pass pass, int frame, double seconds) {
     folder.rendered(pass, frame, seconds);

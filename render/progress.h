@@ -38,9 +38,9 @@ class ProgressReporter {
   [[nodiscard]] const RenderProgress& progress() const { return m_progress; }
 
   /// From now on the ETA follows the pace of the POV-Ray processes (render_pace.h), as the
-  /// picture_… calls tell it; otherwise it is the rate of finished pictures.
+  /// span_started and picture_… calls tell it; otherwise it is the rate of finished pictures.
   void follow_pace() { m_pace.emplace(Clock::now()); }
-  void picture_started(Pass pass, const FrameSpan& span) {
+  void span_started(Pass pass, const FrameSpan& span) {
     if (m_pace) m_pace->started(pass, span, Clock::now());
   }
   void picture_traced(Pass pass, int frame) {

@@ -78,7 +78,7 @@ TEST(ProgressReporter, FollowsThePaceAndLeavesTracedImagesWaitingForDevelopOut) 
   ProgressReporter reporter{nullptr};
   reporter.follow_pace();
   reporter.progress().total = 4;
-  reporter.picture_started(Pass::image, {1, 2});
+  reporter.span_started(Pass::image, {1, 2});
   std::this_thread::sleep_for(std::chrono::milliseconds(100));
   reporter.picture_traced(Pass::image, 1);
   reporter.report();
@@ -92,7 +92,7 @@ TEST(ProgressReporter, FollowsThePaceAndLeavesTracedImagesWaitingForDevelopOut) 
 TEST(ProgressReporter, WithoutThePaceUsesTheRateOfFinishedPictures) {
   ProgressReporter reporter{nullptr};
   reporter.progress().total = 4;
-  reporter.picture_started(Pass::image, {1, 2});
+  reporter.span_started(Pass::image, {1, 2});
   reporter.picture_traced(Pass::image, 1);
   reporter.report();
   EXPECT_LT(reporter.progress().eta_seconds, 0.0);  // nothing done yet: unknown
