@@ -514,8 +514,8 @@ TEST(ExampleFigures, DefaultStreetShopWindowsMirrorTheStreet) {
 // 240–310, y 135–205 of 640×360 must make the shape of a person under an umbrella 39 m away,
 // where 1 m is 17.6 pixels: a canopy 1 m across (at least 12 pixels wide in the top 5 rows),
 // then a body about 0.45 m wide (rows 8–30 at most 10 pixels wide, and 20 of them darkened)
-// down to the feet 37 rows below the top, where the wet road's mirror image continues it.
-// Measured: the canopy 17 pixels wide, the body at most 7, 23 of its rows darkened.
+// down to the feet 35 rows below the top, where the wet road's mirror image continues it.
+// Measured: the canopy 16 pixels wide, the body at most 6, 23 of its rows darkened.
 TEST(ExampleFigures, DefaultStreetHasSomeoneCrossingUnderAnUmbrella) {
   if (!have_povray()) GTEST_SKIP() << "povray is not installed";
   const auto [street, empty] =
