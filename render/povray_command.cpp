@@ -2,6 +2,7 @@
 #include "render/povray_command.h"
 
 #include <fmt/core.h>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -34,7 +35,8 @@ std::vector<std::string> povray_argv(Pass pass, const FrameSpan& span, int digit
           pass == Pass::image ? "scene.ini" : "mask.ini",
           "-D",
           pass == Pass::image ? "+FE" : "+FN",
-          "-V",
+          "+V",
+          "+RS7",
           "-GR",
           "+L.",
           fmt::format("+O{}/{}_.{}", temp_dir_name(), prefix(pass), extension(pass)),
@@ -65,6 +67,21 @@ void prepare_povray_home(const std::filesystem::path& out_dir) {
   if (!std::filesystem::exists(conf)) std::ofstream{conf};
 }
 
+std::optional<double> povray_traced_share(std::string_view log_text) {
+  constexpr std::string_view kRendered = "Rendered ";
+  const std::size_t at = log_text.rfind(kRendered);
+  if (at == std::string_view::npos) return std::nullopt;
+  // "Rendered 1024 of 921600 pixels (0%)"; a tail may cut the last line short.
+  long traced = 0;
+  long total = 0;
+  const std::string line{log_text.substr(at, 64)};
+  if (std::sscanf(line.c_str(), "Rendered %ld of %ld pixels", &traced, &total) != 2 || total <= 0 ||
+      traced < 0 || traced > total) {
+    return std::nullopt;
+  }
+  return static_cast<double>(traced) / static_cast<double>(total);
+}
+
 bool povray_did_not_start(const std::string& log_text) {
   return log_text.find(kPovrayStartupTimeout) != std::string::npos;
 }
@@ -80,6 +97,9 @@ std::vector<std::string> povray_error_lines(const std::string& log_text) {
   bool in_message = false;
   while (std::getline(in, line)) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
+    // +V's progress ("Rendered N of M pixels (P%)\r" after each block) shares a line with
+    // whatever POV-Ray prints next: only what follows the last carriage return is a message.
+    if (const std::size_t cr = line.rfind('\r'); cr != std::string::npos) line.erase(0, cr + 1);
     // POV-Ray wraps messages at ~80 columns; continuation lines start with one space.
     if (in_message && line.size() > 1 && line[0] == ' ' && line[1] != ' ') {
       lines.back() += line;

@@ -4,7 +4,9 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "output/layout.h"
@@ -29,12 +31,16 @@ std::string temp_dir_name();
 
 /// argv for `povray` rendering `span` of the folder's animation. Runs with the output folder as
 /// working directory (relative includes resolve there, +L. adds it to the library path):
-///   povray scene.ini -D +FE -V -GR +L. +Oimages/.tmp/frame_.exr +KFI1 +KFF9999 +SFa +EFb
-///   povray mask.ini -D +FN -V -GR +L. +Oimages/.tmp/mask_.png …
+///   povray scene.ini -D +FE +V +RS7 -GR +L. +Oimages/.tmp/frame_.exr +KFI1 +KFF9999 +SFa +EFb
+///   povray mask.ini -D +FN +V +RS7 -GR +L. +Oimages/.tmp/mask_.png …
 /// +FE: half-float OpenEXR, scene-linear (as scene.ini says); masks stay PNG (data, not light).
-/// -D: headless; -V -GR: quiet but keeps POV-Ray's "File '…' line N:" error lines
-/// (docs/povray-notes.md); +KFI1 +KFF9999 (as many nines as `digits`) keep frame_number and the
-/// zero-padded names identical to the ini's whole animation.
+/// -D: headless; -GR: quiet but keeps POV-Ray's "File '…' line N:" error lines
+/// (docs/povray-notes.md); +V: its "Rendered N of M pixels" after each 32×32 block, which the
+/// ETA reads (povray_traced_share); +RS7: the blocks traced seven apart, round and round the
+/// frame, so the share of pixels traced is the share of the frame's time (the same pixels; in
+/// POV-Ray's own order the fast sky at the top made half the pixels take 29 % of the time).
+/// +KFI1 +KFF9999 (as many nines as `digits`) keep frame_number and the zero-padded names
+/// identical to the ini's whole animation.
 std::vector<std::string> povray_argv(Pass pass, const FrameSpan& span, int digits = 4);
 
 /// Where POV-Ray writes the environment plate first ("images/.tmp/environment_plate.exr").
@@ -61,6 +67,11 @@ std::vector<std::string> povray_error_lines(const std::string& log_text);
 /// own worker thread to start (vfeInitializeTimedOut in its vfe/vfesession.cpp), and a loaded
 /// machine can miss that. Nothing was parsed or traced, so the same command may run again.
 inline constexpr const char* kPovrayStartupTimeout = "Timed out waiting for worker thread startup";
+
+/// How much of the frame it is tracing a POV-Ray log (or the log's tail) says is traced: the last
+/// "Rendered N of M pixels" (+V prints one after each block, separated by carriage returns), as
+/// N / M; nullopt when there is none. 1 once a frame is whole, until the next frame's first block.
+std::optional<double> povray_traced_share(std::string_view log_text);
 
 /// True when the log says POV-Ray did not start (kPovrayStartupTimeout).
 bool povray_did_not_start(const std::string& log_text);

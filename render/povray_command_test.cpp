@@ -8,9 +8,9 @@ namespace {
 
 TEST(PovArgv, RendersASpanOfTheWholeAnimationHeadlessIntoTheTempFolder) {
   const auto argv = povray_argv(Pass::image, {9, 16});
-  const std::vector<std::string> expected{"povray", "scene.ini", "-D",   "+FE",
-                                          "-V",     "-GR",       "+L.",  "+Oimages/.tmp/frame_.exr",
-                                          "+KFI1",  "+KFF9999",  "+SF9", "+EF16"};
+  const std::vector<std::string> expected{
+      "povray", "scene.ini", "-D",   "+FE",  "+V", "+RS7", "-GR", "+L.", "+Oimages/.tmp/frame_.exr",
+      "+KFI1",  "+KFF9999",  "+SF9", "+EF16"};
   EXPECT_EQ(argv, expected);
 }
 
@@ -92,6 +92,50 @@ TEST(PovErrorLines, AMissingFontNamesThePackageThatShipsIt) {
 TEST(PovErrorLines, StatisticsAloneAreNoError) {
   EXPECT_TRUE(
       povray_error_lines("  Parse Time: 0 hours\n  Trace Time: 1 s\nPOV-Ray finished\n").empty());
+}
+
+// A POV-Ray 3.7.0.10 log with +V, as it printed it (a 64×64 scene, frames 1–3, frame 2 with a
+// bad token): each block's "Rendered N of M pixels" ends with a carriage return, the last
+// before the frame's statistics with a newline as well.
+constexpr const char* kProgressLog =
+    "==== [Rendering...] ========================================================\n"
+    "Rendered 1024 of 4096 pixels (25%)\rRendered 2048 of 4096 pixels (50%)\rRendered 3072 of "
+    "4096 pixels (75%)\rRendered 4096 of 4096 pixels (100%)\r\n"
+    "----------------------------------------------------------------------------\n"
+    "Render Statistics\n"
+    "  Trace Time:       0 hours  0 minutes  0 seconds (0.002 seconds)\n"
+    "\n"
+    "Rendering frame 2 of 3\n"
+    "==== [Parsing...] ==========================================================\n"
+    "\n"
+    "File 's.pov' line 5: Parse Error: Expected 'object or directive', undeclared\n"
+    " identifier 'oops' found instead\n"
+    "Fatal error in parser: Cannot parse input.\n"
+    "Render failed\n";
+
+TEST(PovErrorLines, ProgressBeforeTheErrorIsNoPartOfIt) {
+  const auto lines = povray_error_lines(kProgressLog);
+  ASSERT_EQ(lines.size(), 3U);
+  EXPECT_EQ(lines[0],
+            "File 's.pov' line 5: Parse Error: Expected 'object or directive', undeclared "
+            "identifier 'oops' found instead");
+  // A message printed on the progress's line keeps only what follows its last carriage return.
+  const auto mid_frame =
+      povray_error_lines("Rendered 1024 of 4096 pixels (25%)\rFatal error in render: x.\n");
+  ASSERT_EQ(mid_frame.size(), 1U);
+  EXPECT_EQ(mid_frame[0], "Fatal error in render: x.");
+}
+
+TEST(PovTracedShare, IsTheLastProgressLinesShare) {
+  EXPECT_DOUBLE_EQ(*povray_traced_share("Rendered 1024 of 4096 pixels (25%)\rRendered 3072 of "
+                                        "4096 pixels (75%)\r"),
+                   0.75);
+  // A tail that cut the first line short still has a whole last one.
+  EXPECT_DOUBLE_EQ(*povray_traced_share("4096 pixels (50%)\rRendered 2048 of 4096 pix"), 0.5);
+  EXPECT_DOUBLE_EQ(*povray_traced_share(kProgressLog), 1.0);  // frame 1 whole, then the error
+  EXPECT_FALSE(povray_traced_share("==== [Parsing...] ====\n").has_value());
+  EXPECT_FALSE(povray_traced_share("Rendered 12").has_value());  // cut mid-number: no share
+  EXPECT_FALSE(povray_traced_share("Rendered 9 of 4 pixels").has_value());
 }
 
 // The whole log of a POV-Ray 3.7.0.10 that gave up at its start, from a CI run with two test
