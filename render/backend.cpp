@@ -51,6 +51,9 @@ RunnerCallbacks folder_callbacks(output::FolderState& folder, ProgressReporter& 
     if (on_failed) on_failed(failure);
     reporter.report();
   };
+  callbacks.on_traced_share = [&reporter](Pass pass, int frame, double share) {
+    reporter.picture_share(pass, frame, share);
+  };
   callbacks.on_tick = [&reporter] { reporter.report(); };
   return callbacks;
 }

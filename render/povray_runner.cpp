@@ -24,9 +24,10 @@ struct Running {
   int attempt = 1;  // how many times POV-Ray was started on this span's first frame
   std::unique_ptr<ChildProcess> process;
   std::vector<std::string> argv;
-  std::string log;          // relative to out_dir
-  int next_frame = 0;       // first frame of the span not yet promoted
-  Clock::time_point since;  // start of next_frame's work (process start or last promotion)
+  std::string log;               // relative to out_dir
+  int next_frame = 0;            // first frame of the span not yet promoted
+  Clock::time_point since;       // start of next_frame's work (process start or last promotion)
+  Clock::time_point share_read;  // when its log was last read for the share traced
 };
 
 // The rest of a span, to run again ahead of new work.
@@ -93,6 +94,7 @@ class Runner {
       bool any_ended = false;
       for (auto it = running.begin(); it != running.end();) {
         promote_ready(*it);
+        report_traced_share(*it);
         if (const auto code = it->process->poll()) {
           finish(*it, *code, retries);
           it = running.erase(it);
@@ -144,6 +146,7 @@ class Runner {
     spec.env = povray_env(m_out);
     spec.log_path = m_out / r.log;
     r.since = Clock::now();
+    r.share_read = r.since;
     r.process = std::make_unique<ChildProcess>(spec);
     return r;
   }
@@ -167,6 +170,17 @@ class Runner {
       if (m_callbacks.on_rendered) m_callbacks.on_rendered(r.job.pass, r.next_frame, seconds);
       ++r.next_frame;
     }
+  }
+
+  // POV-Ray's progress for the frame it traces, read from its log's end once a second. The
+  // last "Rendered N of M pixels" is the frame after the last promoted one: a whole frame's
+  // (1) is left out, and the next frame prints none while it parses.
+  void report_traced_share(Running& r) {
+    if (!m_callbacks.on_traced_share || r.next_frame > r.job.span.last) return;
+    if (seconds_since(r.share_read) < 1.0) return;
+    r.share_read = Clock::now();
+    const std::optional<double> share = povray_traced_share(read_tail(m_out / r.log, 256));
+    if (share && *share < 1.0) m_callbacks.on_traced_share(r.job.pass, r.next_frame, *share);
   }
 
   void finish(Running& r, int exit_code, std::deque<Retry>& queue) {

@@ -42,6 +42,9 @@ struct RunnerCallbacks {
   /// A verified image is now at final_image_name(pass, frame).
   std::function<void(Pass pass, int frame, double seconds)> on_rendered;
   std::function<void(const FrameFailure&)> on_failed;
+  /// About once a second for each process in flight: the share of its current frame's pixels
+  /// POV-Ray has traced, from its log (povray_traced_share), while under 1.
+  std::function<void(Pass pass, int frame, double share)> on_traced_share;
   /// Called about every 100 ms while waiting, for progress displays.
   std::function<void()> on_tick;
 };

@@ -49,6 +49,10 @@ class ProgressReporter {
   void picture_failed(Pass pass, int frame) {
     if (m_pace) m_pace->failed(pass, frame, Clock::now());
   }
+  /// POV-Ray has traced `share` of the picture's pixels (RenderPace::traced).
+  void picture_share(Pass pass, int frame, double share) {
+    if (m_pace) m_pace->traced(pass, frame, share, Clock::now());
+  }
 
   /// Updates elapsed time and ETA and calls the callback.
   void report();

@@ -2,6 +2,7 @@
 #include "render/render_pace.h"
 
 #include <algorithm>
+#include <vector>
 
 namespace raintrace::render {
 
@@ -38,12 +39,54 @@ void RenderPace::failed(Pass pass, int frame, Clock::time_point now) {
   m_in_flight.erase({pass, frame});
 }
 
+void RenderPace::traced(Pass pass, int frame, double share, Clock::time_point now) {
+  advance(now);
+  const auto it = m_in_flight.find({pass, frame});
+  if (it == m_in_flight.end()) return;
+  InFlight& picture = it->second;
+  if (picture.first_share < 0.0 || share < picture.share) {
+    picture.first_share = share;
+    picture.first_had = picture.had;
+  }
+  picture.share = share;
+  picture.share_had = picture.had;
+}
+
+std::optional<double> RenderPace::left_at_own_rate(const InFlight& picture, double had) {
+  const double traced = picture.share - picture.first_share;
+  if (picture.first_share < 0.0 || traced < kMinTracedShare) return std::nullopt;
+  const double at_report = (1.0 - picture.share) * (picture.share_had - picture.first_had) / traced;
+  return std::max(at_report - (had - picture.share_had), 0.0);
+}
+
 std::optional<double> RenderPace::seconds_left(int untraced, Clock::time_point now) const {
-  if (m_finished == 0) return std::nullopt;
-  const double mean = m_finished_cost / m_finished;
   const double share = share_since_last_event(now);
+  // Each picture in flight: what it is left at its own rate, if it has one.
+  std::vector<std::optional<double>> own;
+  own.reserve(m_in_flight.size());
+  double own_costs = 0.0;
+  int with_own = 0;
+  for (const auto& [key, picture] : m_in_flight) {
+    own.push_back(left_at_own_rate(picture, picture.had + share));
+    if (own.back()) {
+      own_costs += picture.had + share + *own.back();
+      ++with_own;
+    }
+  }
+  double mean = 0.0;
+  if (m_finished > 0) {
+    mean = m_finished_cost / m_finished;
+  } else if (with_own > 0) {
+    mean = own_costs / with_own;
+  } else {
+    return std::nullopt;
+  }
   double left = 0.0;
-  for (const auto& [key, picture] : m_in_flight) left += std::max(mean - picture.had - share, 0.0);
+  std::size_t i = 0;
+  for (const auto& [key, picture] : m_in_flight) {
+    left += own[i] ? *own[i] : std::max(mean - picture.had - share, 0.0);
+    ++i;
+  }
   const int queued = std::max(untraced - static_cast<int>(m_in_flight.size()), 0);
   return left + queued * mean;
 }

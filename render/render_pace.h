@@ -14,6 +14,16 @@
 //
 //     left = Σ_in flight max(mean − had, 0) + queued · mean       (seconds)
 //
+// Until a picture finishes there is no mean, and at 1280×720 final that took 95–130 s. POV-Ray
+// says how much of the frame it has traced (povray_traced_share), and with its blocks taken in
+// a scattered order (+RS7) that share grows with the frame's time. So once a picture in flight
+// has gone from the share s₀ it first showed (with had₀ seconds) to s₁ (had₁), it is left
+//
+//     (1 − s₁) · (had₁ − had₀) / (s₁ − s₀)     once s₁ − s₀ ≥ kMinTracedShare,
+//
+// its own rate (the parse before s₀ left out), in place of max(mean − had, 0); and until a
+// picture finishes, the mean is that of these pictures' whole costs (had₁ + what is left).
+//
 // Usage (render/progress.h feeds it from the runner's callbacks):
 //   RenderPace pace{t0};
 //   pace.started(Pass::image, {1, 3}, t0);      // a process on frames 1–3
@@ -47,9 +57,16 @@ class RenderPace {
   /// A picture failed at `now`: it leaves the flight and its cost is not counted (the runner
   /// starts the rest of its span anew, which started() records).
   void failed(Pass pass, int frame, Clock::time_point now);
+  /// POV-Ray has traced `share` (0–1) of a picture in flight's pixels by `now`. Its first
+  /// report is where its rate is measured from; a share below the last one starts that again.
+  void traced(Pass pass, int frame, double share, Clock::time_point now);
+
+  /// How much more of a frame than its first report must be traced before its own rate counts.
+  static constexpr double kMinTracedShare = 0.1;
 
   /// Seconds until the `untraced` pictures not yet traced (those in flight included) are, by
-  /// the formula above; nullopt until a picture has finished, since there is no pace yet.
+  /// the formulas above; nullopt while there is no pace yet: no picture has finished and none
+  /// in flight has a rate of its own.
   [[nodiscard]] std::optional<double> seconds_left(int untraced, Clock::time_point now) const;
 
   /// Pictures finished so far.
@@ -59,7 +76,16 @@ class RenderPace {
   struct InFlight {
     double had = 0.0;  ///< its share of the machine so far, seconds
     int last = 0;      ///< the last frame of its process's span
+    /// Its first traced() report (share, had then) and its last; first_share < 0: none yet.
+    double first_share = -1.0;
+    double first_had = 0.0;
+    double share = 0.0;
+    double share_had = 0.0;
   };
+  /// What is left of `picture` at its own rate once it has had `had` seconds (its last report's
+  /// estimate less what it has had since); nullopt while it has traced under kMinTracedShare
+  /// since its first report.
+  [[nodiscard]] static std::optional<double> left_at_own_rate(const InFlight& picture, double had);
   /// What each picture in flight has had by `now`, beyond what m_in_flight holds.
   [[nodiscard]] double share_since_last_event(Clock::time_point now) const;
   void advance(Clock::time_point now);

@@ -74,6 +74,43 @@ TEST(RenderPace, AFailedPictureLeavesTheFlightAndTheRestOfItsSpanStartsAnew) {
   EXPECT_DOUBLE_EQ(*pace.seconds_left(4, t0 + seconds(25)), 35.0);
 }
 
+TEST(RenderPace, BeforeAnyPictureFinishesAPictureTracingHasAPaceOfItsOwn) {
+  const auto t0 = Clock::now();
+  RenderPace pace{t0};
+  pace.started(Pass::image, {1, 3}, t0);
+  // POV-Ray parsed for 2 s, then showed 2 % traced: no rate yet.
+  pace.traced(Pass::image, 1, 0.02, t0 + seconds(2));
+  EXPECT_FALSE(pace.seconds_left(3, t0 + seconds(2)).has_value());
+  // 52 % five seconds later: 10 % a second, so 4.8 s left of a picture that costs 7 + 4.8; two
+  // more like it queued: 4.8 + 2·11.8 = 28.4 s. A second on, one less.
+  pace.traced(Pass::image, 1, 0.52, t0 + seconds(7));
+  EXPECT_DOUBLE_EQ(*pace.seconds_left(3, t0 + seconds(7)), 28.4);
+  EXPECT_DOUBLE_EQ(*pace.seconds_left(3, t0 + seconds(8)), 27.4);
+}
+
+TEST(RenderPace, APictureTracingSlowerThanTheMeanIsGivenItsOwnRate) {
+  const auto t0 = Clock::now();
+  RenderPace pace{t0};
+  pace.started(Pass::image, {1, 2}, t0);
+  pace.finished(Pass::image, 1, t0 + seconds(10));  // the mean: 10 s
+  // Frame 2 (a lightning flash, say) has had 12 s and traced only 30 % of its pixels since its
+  // first report at 10 %, 2 s in: 10 s for 20 %, so 35 s left, where the mean says none.
+  pace.traced(Pass::image, 2, 0.1, t0 + seconds(12));
+  pace.traced(Pass::image, 2, 0.3, t0 + seconds(22));
+  EXPECT_DOUBLE_EQ(*pace.seconds_left(1, t0 + seconds(22)), 35.0);
+}
+
+TEST(RenderPace, AShareBelowTheLastStartsTheRateAgain) {
+  const auto t0 = Clock::now();
+  RenderPace pace{t0};
+  pace.started(Pass::image, {1, 1}, t0);
+  pace.traced(Pass::image, 1, 0.9, t0 + seconds(1));  // a stale line from another frame
+  pace.traced(Pass::image, 1, 0.05, t0 + seconds(3));
+  EXPECT_FALSE(pace.seconds_left(1, t0 + seconds(3)).has_value());
+  pace.traced(Pass::image, 1, 0.25, t0 + seconds(5));  // 10 % a second: 7.5 s left
+  EXPECT_DOUBLE_EQ(*pace.seconds_left(1, t0 + seconds(5)), 7.5);
+}
+
 TEST(ProgressReporter, FollowsThePaceAndLeavesTracedImagesWaitingForDevelopOut) {
   ProgressReporter reporter{nullptr};
   reporter.follow_pace();
