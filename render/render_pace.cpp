@@ -2,6 +2,7 @@
 #include "render/render_pace.h"
 
 #include <algorithm>
+#include <numeric>
 #include <vector>
 
 namespace raintrace::render {
@@ -28,7 +29,8 @@ void RenderPace::finished(Pass pass, int frame, Clock::time_point now) {
   const auto it = m_in_flight.find({pass, frame});
   if (it == m_in_flight.end()) return;
   ++m_finished;
-  m_finished_cost += it->second.had;
+  m_recent_costs.push_back(it->second.had);
+  if (m_recent_costs.size() > kRecentFinished) m_recent_costs.pop_front();
   const int last = it->second.last;
   m_in_flight.erase(it);
   if (frame < last) m_in_flight[{pass, frame + 1}] = InFlight{0.0, last};
@@ -61,7 +63,7 @@ std::optional<double> RenderPace::left_at_own_rate(const InFlight& picture, doub
 
 std::optional<double> RenderPace::seconds_left(int untraced, Clock::time_point now) const {
   const double share = share_since_last_event(now);
-  // Each picture in flight: what it is left at its own rate, if it has one.
+  // Each picture in flight: what is left of it at its own rate, if it has one.
   std::vector<std::optional<double>> own;
   own.reserve(m_in_flight.size());
   double own_costs = 0.0;
@@ -74,8 +76,9 @@ std::optional<double> RenderPace::seconds_left(int untraced, Clock::time_point n
     }
   }
   double mean = 0.0;
-  if (m_finished > 0) {
-    mean = m_finished_cost / m_finished;
+  if (!m_recent_costs.empty()) {
+    mean = std::accumulate(m_recent_costs.begin(), m_recent_costs.end(), 0.0) /
+           static_cast<double>(m_recent_costs.size());
   } else if (with_own > 0) {
     mean = own_costs / with_own;
   } else {

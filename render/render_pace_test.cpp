@@ -74,6 +74,21 @@ TEST(RenderPace, AFailedPictureLeavesTheFlightAndTheRestOfItsSpanStartsAnew) {
   EXPECT_DOUBLE_EQ(*pace.seconds_left(4, t0 + seconds(25)), 35.0);
 }
 
+TEST(RenderPace, TheMeanIsTheLatestFinishedPicturesOnly) {
+  const auto t0 = Clock::now();
+  RenderPace pace{t0};
+  // One process, sixteen frames: eight cost 20 s each (beside an exporter, say), then eight
+  // cost 10 s. The mean is the last eight's, 10 s: frame 17 is just starting, 10 s left.
+  pace.started(Pass::image, {1, 17}, t0);
+  int t = 0;
+  for (int frame = 1; frame <= 16; ++frame) {
+    t += frame <= 8 ? 20 : 10;
+    pace.finished(Pass::image, frame, t0 + seconds(t));
+  }
+  EXPECT_EQ(pace.finished_count(), 16);
+  EXPECT_DOUBLE_EQ(*pace.seconds_left(1, t0 + seconds(t)), 10.0);
+}
+
 TEST(RenderPace, BeforeAnyPictureFinishesAPictureTracingHasAPaceOfItsOwn) {
   const auto t0 = Clock::now();
   RenderPace pace{t0};
