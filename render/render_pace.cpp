@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <numeric>
-#include <vector>
 
 namespace raintrace::render {
 
@@ -61,37 +60,36 @@ std::optional<double> RenderPace::left_at_own_rate(const InFlight& picture, doub
   return std::max(at_report - (had - picture.share_had), 0.0);
 }
 
-std::optional<double> RenderPace::seconds_left(int untraced, Clock::time_point now) const {
-  const double share = share_since_last_event(now);
-  // Each picture in flight: what is left of it at its own rate, if it has one.
-  std::vector<std::optional<double>> own;
-  own.reserve(m_in_flight.size());
-  double own_costs = 0.0;
-  int with_own = 0;
+std::optional<double> RenderPace::mean_cost(double share) const {
+  if (!m_recent_costs.empty()) {
+    return std::accumulate(m_recent_costs.begin(), m_recent_costs.end(), 0.0) /
+           static_cast<double>(m_recent_costs.size());
+  }
+  // None finished yet: the whole costs of the pictures in flight that have a rate of their own.
+  double costs = 0.0;
+  int counted = 0;
   for (const auto& [key, picture] : m_in_flight) {
-    own.push_back(left_at_own_rate(picture, picture.had + share));
-    if (own.back()) {
-      own_costs += picture.had + share + *own.back();
-      ++with_own;
+    const double had = picture.had + share;
+    if (const auto left = left_at_own_rate(picture, had)) {
+      costs += had + *left;
+      ++counted;
     }
   }
-  double mean = 0.0;
-  if (!m_recent_costs.empty()) {
-    mean = std::accumulate(m_recent_costs.begin(), m_recent_costs.end(), 0.0) /
-           static_cast<double>(m_recent_costs.size());
-  } else if (with_own > 0) {
-    mean = own_costs / with_own;
-  } else {
-    return std::nullopt;
-  }
+  if (counted == 0) return std::nullopt;
+  return costs / counted;
+}
+
+std::optional<double> RenderPace::seconds_left(int untraced, Clock::time_point now) const {
+  const double share = share_since_last_event(now);
+  const std::optional<double> mean = mean_cost(share);
+  if (!mean) return std::nullopt;
   double left = 0.0;
-  std::size_t i = 0;
   for (const auto& [key, picture] : m_in_flight) {
-    left += own[i] ? *own[i] : std::max(mean - picture.had - share, 0.0);
-    ++i;
+    const double had = picture.had + share;
+    left += left_at_own_rate(picture, had).value_or(std::max(*mean - had, 0.0));
   }
   const int queued = std::max(untraced - static_cast<int>(m_in_flight.size()), 0);
-  return left + queued * mean;
+  return left + queued * *mean;
 }
 
 }  // namespace raintrace::render

@@ -95,6 +95,10 @@ class RenderPace {
   /// estimate less what it has had since); nullopt while it has traced under kMinTracedShare
   /// since its first report.
   [[nodiscard]] static std::optional<double> left_at_own_rate(const InFlight& picture, double had);
+  /// The cost a picture is expected to have, `share` seconds of each picture in flight after
+  /// the last event: the mean of the recent finished ones, or before any finishes, of those in
+  /// flight with a rate of their own; nullopt while there is neither.
+  [[nodiscard]] std::optional<double> mean_cost(double share) const;
   /// What each picture in flight has had by `now`, beyond what m_in_flight holds.
   [[nodiscard]] double share_since_last_event(Clock::time_point now) const;
   void advance(Clock::time_point now);
