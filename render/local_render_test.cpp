@@ -74,19 +74,10 @@ TEST_F(PovrayLocalRender, RendersEveryFrameToAValidImageAndRecordsItInTheManifes
   expect_every_frame_rendered(dir, 6);
 }
 
-// A frame that takes POV-Ray some 7 s to trace on two cores (an isosurface sought to a
-// hundred-thousandth, its surface lumpy with granite) at 320×180: ten 32×32 blocks across.
-constexpr const char* kSlowFrame =
-    "#include \"scene.inc\"\n"
-    "#declare Grain = function { pattern { granite scale 0.3 } }\n"
-    "isosurface { function { x * x + y * y + z * z - 4 + 0.5 * Grain(x, y, z) }\n"
-    "             contained_by { box { -2.5, 2.5 } } max_gradient 300 accuracy 0.00001\n"
-    "             pigment { rgb 1 } }\n";
-
 TEST_F(PovrayLocalRender, TheEtaIsKnownFromPovraysProgressBeforeAFrameIsDone) {
   const auto dir = testing::fresh_test_dir("eta_from_progress");
   testing::write_test_folder(dir, {.frames = 1, .width = 320, .height = 180});
-  testing::replace_frame(dir, 1, kSlowFrame);
+  testing::replace_frame(dir, 1, testing::kSlowFrame);
   auto s = settings(1);
   // The first estimate, and the picture count then: POV-Ray's "Rendered N of M pixels" (+V),
   // read from its log once a second, gives a frame's pace while it traces.

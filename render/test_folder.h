@@ -32,6 +32,16 @@ void write_test_folder(const std::filesystem::path& dir, const TestFolderSpec& s
 /// export whose frame changed would).
 void replace_frame(const std::filesystem::path& dir, int frame, const std::string& text);
 
+/// A frame that takes POV-Ray some 7 s to trace on two cores at 320×180 (ten 32×32 blocks
+/// across): an isosurface sought to a hundred-thousandth, its surface lumpy with granite. For
+/// replace_frame, where a test needs a frame still tracing after a few seconds.
+inline constexpr const char* kSlowFrame =
+    "#include \"scene.inc\"\n"
+    "#declare Grain = function { pattern { granite scale 0.3 } }\n"
+    "isosurface { function { x * x + y * y + z * z - 4 + 0.5 * Grain(x, y, z) }\n"
+    "             contained_by { box { -2.5, 2.5 } } max_gradient 300 accuracy 0.00001\n"
+    "             pigment { rgb 1 } }\n";
+
 /// True when `povray` is in PATH.
 bool system_has_povray();
 
