@@ -1,5 +1,7 @@
 // Progress of a render, shared by the local and the Slurm backend: the counts, and the one place
-// that turns them into elapsed time and an ETA for whoever displays them (cli/).
+// that turns them into elapsed time and an ETA for whoever displays them (cli/). Both follow
+// the pace of their POV-Ray processes: the local runner's, and the Slurm tasks' as they publish
+// them (slurm_flight.h).
 #pragma once
 
 #include <chrono>

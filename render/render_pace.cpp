@@ -1,4 +1,4 @@
-// The remaining time of a local render from its processes' pace (render_pace.h).
+// The remaining time of a render from its processes' pace (render_pace.h).
 #include "render/render_pace.h"
 
 #include <algorithm>

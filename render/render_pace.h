@@ -1,4 +1,4 @@
-// How long a local render has left, from the pace of its POV-Ray processes rather than from
+// How long a render has left, from the pace of its POV-Ray processes rather than from
 // the pictures finished so far. Several processes start together and finish together, so the
 // plain rate (elapsed ÷ finished × left) is off by the depth of that pipeline: rendering the
 // default example's frames 1–12 at 1280×720 final with 4 processes on 2 cores, the first
@@ -27,6 +27,9 @@
 //
 // its own rate (the parse before s₀ left out), in place of max(mean − had, 0); and until a
 // picture finishes, the mean is that of these pictures' whole costs (had₁ + what is left).
+//
+// A Slurm job's tasks are fed the same way, from the files they publish (slurm_flight.h): n
+// tasks on n nodes share the cluster as n processes share a machine.
 //
 // Usage (render/progress.h feeds it from the runner's callbacks):
 //   RenderPace pace{t0};

@@ -7,6 +7,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+#include <system_error>
 #include <thread>
 
 #include "output/folder_lock.h"
@@ -15,6 +16,7 @@
 #include "render/develop_queue.h"
 #include "render/environment_plate.h"
 #include "render/process.h"
+#include "render/slurm_flight.h"
 #include "render/spans.h"
 #include "render/text_file.h"
 
@@ -300,6 +302,9 @@ RenderSummary render_slurm(FolderState& folder, const SlurmRenderSettings& setti
                      out_dir.string()));
 
   Merger merger{folder, callbacks, &reporter, [&developer](int f) { developer.submit(f); }};
+  // The ETA follows the tasks' pace, as a local render's follows its processes' (slurm_flight.h).
+  reporter.follow_pace();
+  FlightFollower flights;
   for (;;) {
     if (settings.stop != nullptr && settings.stop->load()) {
       ProcessSpec cancel;
@@ -312,6 +317,7 @@ RenderSummary render_slurm(FolderState& folder, const SlurmRenderSettings& setti
     }
     const bool active = job_active(job_id);
     merger.merge_all();
+    flights.follow(results_dir(out_dir), folder.holder().run_id, reporter);
     record_developed(folder, reporter, summary, developer.take(), settings.on_failed);
     reporter.report();
     if (!active) break;
@@ -427,10 +433,34 @@ int run_slurm_task(const std::filesystem::path& out_dir_in, int task_index,
       write_develop_result(d);
     }
   };
+  // What this task's POV-Ray has in flight, for the submitting raintrace's ETA (slurm_flight.h).
+  // Not written is not fatal: the ETA is a guide, and the frames' results say what went wrong.
+  TaskFlight flight;
+  auto publish = [&] {
+    try {
+      publish_flight(results_dir(out_dir), task_index, run_id, flight);
+    } catch (const std::system_error&) {
+    }
+  };
   RunnerCallbacks callbacks;
-  callbacks.on_started = [&](const RenderJob&) { output::require_lock_held_by(out_dir, run_id); };
+  callbacks.on_started = [&](const RenderJob& job) {
+    output::require_lock_held_by(out_dir, run_id);
+    flight = {job.pass, job.span, job.span.first, -1.0};
+    publish();
+  };
+  callbacks.on_traced_share = [&](Pass pass, int frame, double share) {
+    flight.pass = pass;
+    flight.frame = frame;
+    flight.share = share;
+    publish();
+  };
   callbacks.on_rendered = [&](Pass pass, int frame, double seconds) {
     write_result(pass, frame, {{"status", "rendered"}, {"seconds", seconds}});
+    if (pass == flight.pass && frame == flight.frame && frame < flight.span.last) {
+      flight.frame = frame + 1;
+      flight.share = -1.0;
+      publish();
+    }
     if (pass != Pass::image) return;
     if (developer != nullptr) {
       developer->submit(frame);
@@ -450,6 +480,7 @@ int run_slurm_task(const std::filesystem::path& out_dir_in, int task_index,
                   {"error", failure.summary()}});
   };
   const bool finished = run_povray_jobs(out_dir, std::move(jobs), runner, callbacks);
+  retire_flight(results_dir(out_dir), task_index);
   while (developer != nullptr && !developer->idle()) {
     write_develop_results();
     std::this_thread::sleep_for(std::chrono::milliseconds(20));

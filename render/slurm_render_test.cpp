@@ -6,6 +6,7 @@
 #include <OpenImageIO/imagebufalgo.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -154,6 +155,34 @@ TEST_F(SlurmRender, JobArrayRendersTheSamePixelsAsLocal) {
   EXPECT_EQ(developed_on_nodes, 6);
   // A second submission finds nothing to do and submits nothing.
   EXPECT_EQ(render_slurm(dir / "slurm", settings).progress.total, 0);
+}
+
+TEST_F(SlurmRender, TheEtaIsKnownFromTheTasksProgressBeforeAFrameIsDone) {
+  const auto dir = testing::fresh_test_dir("slurm_eta");
+  testing::write_test_folder(dir, {.frames = 2, .width = 320, .height = 180});
+  testing::replace_frame(dir, 1, testing::kSlowFrame);
+  SlurmRenderSettings settings;
+  settings.tasks = 1;
+  settings.raintrace_exe = RAINTRACE_BINARY;
+  settings.poll_seconds = 0.3;
+  // The first estimate, and the picture count then: the task publishes its POV-Ray's traced
+  // share (slurm_flight.h), which the submitter follows at each poll.
+  double first_eta = -1.0;
+  int done_then = -1;
+  settings.on_progress = [&](const RenderProgress& p) {
+    if (first_eta < 0.0 && p.eta_seconds >= 0.0) {
+      first_eta = p.eta_seconds;
+      done_then = p.done + p.failed;
+    }
+  };
+  const auto summary = render_slurm(dir, settings);
+  ASSERT_TRUE(summary.failures.empty()) << summary.failures[0].summary();
+  EXPECT_EQ(summary.progress.done, 2);
+  // From finished frames alone there is no ETA until frame 1, some 7 s of tracing, is done.
+  EXPECT_GT(first_eta, 0.0) << "no ETA while the first frame traced";
+  EXPECT_EQ(done_then, 0);
+  EXPECT_FALSE(std::filesystem::exists(dir / "slurm/results/.flight_0.json"));
+  std::printf("first ETA %.1f s, while frame 1 traced\n", first_eta);
 }
 
 TEST_F(SlurmRender, FramesWhosePngIsAllTheyLackAreDevelopedHereWithoutAJob) {
