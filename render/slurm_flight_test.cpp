@@ -27,18 +27,23 @@ struct EtaProbe {
   }
 };
 
-void wait_a_little() { std::this_thread::sleep_for(std::chrono::milliseconds(30)); }
+// Task 0's flight over frames 1–3, written for `written_for` at `first_share`, then 30 ms later at
+// `second_share`, each time followed for `followed`.
+void report_twice(const std::filesystem::path& results, const std::string& written_for,
+                  const std::string& followed, EtaProbe& probe, int frame, double first_share,
+                  double second_share) {
+  FlightFollower flights;
+  publish_flight(results, 0, written_for, {Pass::image, {1, 3}, frame, first_share});
+  flights.follow(results, followed, probe.reporter);
+  std::this_thread::sleep_for(std::chrono::milliseconds(30));
+  publish_flight(results, 0, written_for, {Pass::image, {1, 3}, frame, second_share});
+  flights.follow(results, followed, probe.reporter);
+}
 
 TEST(FlightFollower, ATasksTracedShareGivesAnEtaBeforeAnyFrameIsDone) {
   const auto results = testing::fresh_test_dir("flight_eta");
   EtaProbe probe{3};
-  FlightFollower flights;
-  publish_flight(results, 0, "run-1", {Pass::image, {1, 3}, 1, 0.05});
-  flights.follow(results, "run-1", probe.reporter);
-  EXPECT_LT(probe.eta_now(), 0.0) << "one report gives no rate yet";
-  wait_a_little();
-  publish_flight(results, 0, "run-1", {Pass::image, {1, 3}, 1, 0.35});
-  flights.follow(results, "run-1", probe.reporter);
+  report_twice(results, "run-1", "run-1", probe, 1, 0.05, 0.35);
   // The frame traced 0.3 of itself in the time between: it has about 0.65/0.3 of that left,
   // and the two queued frames cost it whole each, so the ETA is about 8.5 times that time.
   const double eta = probe.eta_now();
@@ -49,13 +54,8 @@ TEST(FlightFollower, ATasksTracedShareGivesAnEtaBeforeAnyFrameIsDone) {
 TEST(FlightFollower, FlightsOfAnotherRunAndUnreadableFilesAreIgnored) {
   const auto results = testing::fresh_test_dir("flight_other_run");
   EtaProbe probe{3};
-  FlightFollower flights;
-  publish_flight(results, 0, "run-0", {Pass::image, {1, 3}, 1, 0.05});
   std::ofstream{results / ".flight_1.json"} << "{\"run_id\": \"run-1\", \"task\":";  // cut short
-  flights.follow(results, "run-1", probe.reporter);
-  wait_a_little();
-  publish_flight(results, 0, "run-0", {Pass::image, {1, 3}, 1, 0.35});
-  flights.follow(results, "run-1", probe.reporter);
+  report_twice(results, "run-0", "run-1", probe, 1, 0.05, 0.35);
   EXPECT_LT(probe.eta_now(), 0.0);
 }
 
@@ -64,12 +64,7 @@ TEST(FlightFollower, ATaskFirstSeenPastItsFirstFrameIsFollowedFromThere) {
   // 3, so once frame 3 is traced nothing is left in flight and no ETA is owed for 1 or 2.
   const auto results = testing::fresh_test_dir("flight_late");
   EtaProbe probe{1};
-  FlightFollower flights;
-  publish_flight(results, 0, "run-1", {Pass::image, {1, 3}, 3, 0.1});
-  flights.follow(results, "run-1", probe.reporter);
-  wait_a_little();
-  publish_flight(results, 0, "run-1", {Pass::image, {1, 3}, 3, 0.6});
-  flights.follow(results, "run-1", probe.reporter);
+  report_twice(results, "run-1", "run-1", probe, 3, 0.1, 0.6);
   EXPECT_GT(probe.eta_now(), 0.0);
   probe.reporter.picture_traced(Pass::image, 3);
   // Traced, not yet developed: nothing is left to trace.
