@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # How far a render's ETA was from the time really left: reads the progress lines `raintrace
-# render` writes to a log or pipe ("render: D/T frames done, F failed, E s elapsed, ETA N s")
-# and its last line ("… failed in S s"), and prints, for each progress line, the ETA, what the
-# plain rate of finished pictures (E ÷ (D + F) × (T − D − F)) would have said at that moment, and
-# the time really left (S − E); then, for both, when the first estimate came and the median and
-# worst of |estimate − left| ÷ left.
+# render` writes to a log or pipe ("render: D/T frames done, [X/T exported,] F failed, E s
+# elapsed, ETA N s") and its last line ("… failed in S s"), and prints, for each progress line,
+# the ETA, what the plain rate of finished pictures (E ÷ (D + F) × (T − D − F)) would have said
+# at that moment, and the time really left (S − E); then, for both, when the first estimate
+# came and the median and worst of |estimate − left| ÷ left.
 # Usage: raintrace render SCENE -o OUT … 2> progress.txt; bench/eta_error.sh progress.txt
 set -euo pipefail
 [[ $# == 1 ]] || { echo "usage: $0 PROGRESS_LOG" >&2; exit 2; }
@@ -14,8 +14,10 @@ tr '\r' '\n' < "$1" | awk '
     for (i = 2; i <= n; i++) for (j = i; j > 1 && a[j - 1] > a[j]; j--) { t = a[j]; a[j] = a[j - 1]; a[j - 1] = t }
     return n % 2 ? a[(n + 1) / 2] : (a[n / 2] + a[n / 2 + 1]) / 2
   }
-  match($0, /[0-9]+\/[0-9]+ frames done, [0-9]+ failed, [0-9.]+ s elapsed, ETA [0-9a-z]+/) {
-    split(substr($0, RSTART, RLENGTH), w, /[\/ ,]+/)
+  # A local render also counts the frames exported ("…, 30/48 exported, …"): left out.
+  match($0, /[0-9]+\/[0-9]+ frames done, ([0-9]+\/[0-9]+ exported, )?[0-9]+ failed, [0-9.]+ s elapsed, ETA [0-9a-z]+/) {
+    line = substr($0, RSTART, RLENGTH); sub(/[0-9]+\/[0-9]+ exported, /, "", line)
+    split(line, w, /[\/ ,]+/)
     n++; done_[n] = w[1] + w[5]; total[n] = w[2]; elapsed[n] = w[7]
     eta[n] = (w[11] == "unknown") ? -1 : w[11]
   }
