@@ -121,8 +121,8 @@ class Runner {
   bool stop_requested() const { return m_settings.stop != nullptr && m_settings.stop->load(); }
 
   // Room one more frame needs at most: an uncompressed half-float RGBA EXR (8 bytes a pixel),
-  // its developed 8-bit PNG (3), plus its log: 64 KiB and a progress line of ~40 bytes for each
-  // 32×32 block (+V).
+  // its developed 8-bit PNG (3), plus its log: 64 KiB and, for each 32×32 block, a progress line
+  // (+V) of ~40 bytes, 48 allowed.
   [[nodiscard]] std::uint64_t image_bytes() const {
     const auto pixels = static_cast<std::uint64_t>(m_settings.width) * m_settings.height;
     return pixels * 11 + (pixels / 1024 + 1) * 48 + 65536;
