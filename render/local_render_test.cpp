@@ -5,6 +5,7 @@
 #include <atomic>
 #include <chrono>
 #include <fstream>
+#include <functional>
 #include <thread>
 
 #include "output/folder_state.h"
@@ -81,21 +82,15 @@ TEST_F(PovrayLocalRender, TheEtaIsKnownFromPovraysProgressBeforeAFrameIsDone) {
   auto s = settings(1);
   // The first estimate, and the picture count then: POV-Ray's "Rendered N of M pixels" (+V),
   // read from its log once a second, gives a frame's pace while it traces.
-  double first_eta = -1.0;  // the first ETA of the run
-  int done_then = -1;
-  s.on_progress = [&](const RenderProgress& p) {
-    if (first_eta < 0.0 && p.eta_seconds >= 0.0) {
-      first_eta = p.eta_seconds;
-      done_then = p.done + p.failed;
-    }
-  };
+  testing::FirstEta first;
+  s.on_progress = std::ref(first);
   const auto summary = render_local(dir, s);
   EXPECT_EQ(summary.progress.done, 1);
   // With a frame's pace only from finished frames, a one-frame render has no ETA until its
   // frame is traced, and then 0 s (nothing left to trace) while it is developed.
-  EXPECT_GT(first_eta, 0.0) << "no ETA while the frame traced";
-  EXPECT_EQ(done_then, 0);
-  std::printf("first ETA %.1f s, while the frame traced\n", first_eta);
+  EXPECT_GT(first.seconds, 0.0) << "no ETA while the frame traced";
+  EXPECT_EQ(first.finished_then, 0);
+  std::printf("first ETA %.1f s, while the frame traced\n", first.seconds);
 }
 
 TEST_F(PovrayLocalRender, OtherDevelopSettingsDevelopEveryFrameAgainAndStartNoPovray) {

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 #include "output/folder_state.h"
@@ -167,22 +168,16 @@ TEST_F(SlurmRender, TheEtaIsKnownFromTheTasksProgressBeforeAFrameIsDone) {
   settings.poll_seconds = 0.3;
   // The first estimate, and the picture count then: the task publishes its POV-Ray's traced
   // share (slurm_flight.h), which the submitter follows at each poll.
-  double first_eta = -1.0;
-  int done_then = -1;
-  settings.on_progress = [&](const RenderProgress& p) {
-    if (first_eta < 0.0 && p.eta_seconds >= 0.0) {
-      first_eta = p.eta_seconds;
-      done_then = p.done + p.failed;
-    }
-  };
+  testing::FirstEta first;
+  settings.on_progress = std::ref(first);
   const auto summary = render_slurm(dir, settings);
   ASSERT_TRUE(summary.failures.empty()) << summary.failures[0].summary();
   EXPECT_EQ(summary.progress.done, 2);
   // From finished frames alone there is no ETA until frame 1, some 7 s of tracing, is done.
-  EXPECT_GT(first_eta, 0.0) << "no ETA while the first frame traced";
-  EXPECT_EQ(done_then, 0);
+  EXPECT_GT(first.seconds, 0.0) << "no ETA while the first frame traced";
+  EXPECT_EQ(first.finished_then, 0);
   EXPECT_FALSE(std::filesystem::exists(dir / "slurm/results/.flight_0.json"));
-  std::printf("first ETA %.1f s, while frame 1 traced\n", first_eta);
+  std::printf("first ETA %.1f s, while frame 1 traced\n", first.seconds);
 }
 
 TEST_F(SlurmRender, FramesWhosePngIsAllTheyLackAreDevelopedHereWithoutAJob) {

@@ -8,6 +8,8 @@
 #include <map>
 #include <string>
 
+#include "render/progress.h"
+
 namespace raintrace::render::testing {
 
 struct TestFolderSpec {
@@ -41,6 +43,19 @@ inline constexpr const char* kSlowFrame =
     "isosurface { function { x * x + y * y + z * z - 4 + 0.5 * Grain(x, y, z) }\n"
     "             contained_by { box { -2.5, 2.5 } } max_gradient 300 accuracy 0.00001\n"
     "             pigment { rgb 1 } }\n";
+
+/// A render's progress callback (std::ref it into on_progress) that keeps the first ETA and
+/// how many pictures were finished when it came.
+struct FirstEta {
+  double seconds = -1.0;
+  int finished_then = -1;
+  void operator()(const RenderProgress& p) {
+    if (seconds < 0.0 && p.eta_seconds >= 0.0) {
+      seconds = p.eta_seconds;
+      finished_then = p.done + p.failed;
+    }
+  }
+};
 
 /// True when `povray` is in PATH.
 bool system_has_povray();
