@@ -180,12 +180,14 @@ bool environment_plate_applies(const ExportParams& look) {
   const bool scenery_beyond_rain =
       look.environment.include_path.empty() &&
       (look.environment.name == "night_street" || look.environment.name == "field");
-  const bool fog = look.fog.mode != FogMode::off && look.fog.density_per_m > 0.0;
+  // Ground fog is densest at the ground: its density there bounds what a drop misses.
+  const double fog_density = look.fog.mode == FogMode::off ? 0.0 : look.fog.density_per_m;
+  const bool thin_fog = 1.0 - std::exp(-fog_density * look.rain.far_m) <= kPlateFogDimming;
   // The plate is the camera's picture, already through the lens barrel's rim: a frame's rays
   // to it would pass the rim a second time.
   const bool barrel = look.optical_vignetting > 0.0;
   return look.quality == Quality::preview && look.environment_plate && scenery_beyond_rain &&
-         !fog && !barrel;
+         thin_fog && !barrel;
 }
 
 std::string plate_pov_text() {
@@ -269,7 +271,11 @@ std::string scene_inc_text(const ExportParams& look) {
   // The light of the surroundings that a drop refracts (docs/rain-appearance.md): declared by
   // the environment; without it the rain shows only the lights it scatters.
   text += "#ifndef(RT_RainSurround) #declare RT_RainSurround=rgb 0; #end\n";
-  text += fog_text(look.fog, look.camera);
+  // The plate holds the fog as it holds the rain medium: frames that draw it leave it out,
+  // or its light would be counted twice on the way to the plate.
+  const std::string fog = fog_text(look.fog, look.camera);
+  text += environment_plate_applies(look) && !fog.empty() ? "#if(!RT_LightsOnly)\n" + fog + "#end\n"
+                                                          : fog;
   // The rain medium holds no simulated drop, so the environment plate may hold it exactly:
   // frames that draw the plate leave it out and pay nothing. Elsewhere a preview draws its fog
   // form (free, without the lights' scattering, 75 % of the medium's effect on the default

@@ -243,6 +243,9 @@ TEST(SceneFiles, EnvironmentPlateOnlyWhereItStandsInFaithfully) {
   refused([](ExportParams& l) { l.environment_plate = false; });
   refused([](ExportParams& l) { l.environment.name = "closeup"; });  // backdrop inside the rain
   refused([](ExportParams& l) { l.environment.include_path = "mine.inc"; });
+  // Fog that dims the drawn rain by more than kPlateFogDimming: the plate holds the fog and
+  // frames that draw it leave it out, so their drops would miss too much of it. The default
+  // density, 0.03 /m, over the default 12 m of drawn rain takes 30 %.
   refused([](ExportParams& l) { l.fog.mode = FogMode::ground; });
   refused([](ExportParams& l) { l.fog.mode = FogMode::media; });
   // The plate went through the lens barrel's rim already; the frames' rays would pass it again.
@@ -255,6 +258,19 @@ TEST(SceneFiles, EnvironmentPlateOnlyWhereItStandsInFaithfully) {
   clear.fog.mode = FogMode::media;
   clear.fog.density_per_m = 0.0;
   EXPECT_TRUE(environment_plate_applies(clear));
+  // The default example's mist, 0.0075 /m over 6 m: 4.4 %. The plate holds it, so the frames
+  // that draw the plate leave it out; the plate itself and frames traced whole keep it.
+  ExportParams thin;
+  thin.fog.mode = FogMode::ground;
+  thin.fog.density_per_m = 0.0075;
+  thin.rain.far_m = 6.0;
+  EXPECT_TRUE(environment_plate_applies(thin));
+  const std::string thin_text = scene_inc_text(thin);
+  EXPECT_TRUE(contains(thin_text, "#if(!RT_LightsOnly)\nfog{fog_type 2 distance 133.3"));
+  thin.rain.far_m = 7.0;  // 5.1 %
+  EXPECT_FALSE(environment_plate_applies(thin));
+  EXPECT_FALSE(contains(scene_inc_text(thin), "#if(!RT_LightsOnly)\nfog{"));
+  EXPECT_TRUE(contains(scene_inc_text(thin), "fog{fog_type 2 distance 133.3"));
 }
 
 TEST(SceneFiles, PlateIniRendersTheEnvironmentAloneAtTheFramesSize) {
