@@ -156,9 +156,9 @@ struct ExportParams {
   /// rain instead of ray tracing the environment in every frame. Only the environment's lights
   /// stay in the frame to light the rain. Applies to night_street and field without fog or in
   /// thin fog, which the plate then holds (environment_plate_applies()); frames with lightning
-  /// trace the full environment. What it
-  /// leaves out: the rain's reflection in the wet street, and scenery in front of rain that lies
-  /// behind it (none within ~7 m of night_street's default camera).
+  /// trace the full environment. What it leaves out: the rain's reflection in the wet street,
+  /// and scenery in front of rain that lies behind it (none within ~7 m of night_street's
+  /// default camera).
   bool environment_plate = true;
   /// Also write a rain mask scene per frame (rain white on black).
   bool mask = false;
