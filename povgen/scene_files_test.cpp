@@ -267,6 +267,11 @@ TEST(SceneFiles, EnvironmentPlateOnlyWhereItStandsInFaithfully) {
   EXPECT_TRUE(environment_plate_applies(thin));
   const std::string thin_text = scene_inc_text(thin);
   EXPECT_TRUE(contains(thin_text, "#if(!RT_LightsOnly)\nfog{fog_type 2 distance 133.3"));
+  // Media mist as thin: its container around the camera is left out of those frames too.
+  ExportParams thin_media = thin;
+  thin_media.fog.mode = FogMode::media;
+  EXPECT_TRUE(environment_plate_applies(thin_media));
+  EXPECT_TRUE(contains(scene_inc_text(thin_media), "#if(!RT_LightsOnly)\nsphere{"));
   thin.rain.far_m = 7.0;  // 5.1 %
   EXPECT_FALSE(environment_plate_applies(thin));
   EXPECT_FALSE(contains(scene_inc_text(thin), "#if(!RT_LightsOnly)\nfog{"));
