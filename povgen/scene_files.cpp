@@ -263,7 +263,8 @@ std::string scene_inc_text(const ExportParams& look) {
   // RT_RainExtinction); the medium is placed after it.
   const std::string medium = rain_medium_text(look);
   text += medium;
-  if (environment_plate_applies(look)) {
+  const bool plate = environment_plate_applies(look);
+  if (plate) {
     text += environment_with_plate_text(look, aspect);
   } else {
     text += "#include \"" + std::string{kEnvironmentInclude} + "\"\n";
@@ -274,17 +275,15 @@ std::string scene_inc_text(const ExportParams& look) {
   // The plate holds the fog as it holds the rain medium: frames that draw it leave it out,
   // or its light would be counted twice on the way to the plate.
   const std::string fog = fog_text(look.fog, look.camera);
-  text += environment_plate_applies(look) && !fog.empty() ? "#if(!RT_LightsOnly)\n" + fog + "#end\n"
-                                                          : fog;
+  text += plate && !fog.empty() ? "#if(!RT_LightsOnly)\n" + fog + "#end\n" : fog;
   // The rain medium holds no simulated drop, so the environment plate may hold it exactly:
   // frames that draw the plate leave it out and pay nothing. Elsewhere a preview draws its fog
   // form (free, without the lights' scattering, 75 % of the medium's effect on the default
   // street) and final the media (+0.6 CPU s a 640×360 frame). Guarded in POV-Ray, so
   // Declare=RT_Preview=0 still renders a preview folder as the final scene.
   if (!medium.empty()) {
-    text += environment_plate_applies(look)
-                ? "#if(!RT_LightsOnly)\nRT_RainMedium()\n#end\n"
-                : "#if(RT_Preview)\nRT_RainFog()\n#else\nRT_RainMedium()\n#end\n";
+    text += plate ? "#if(!RT_LightsOnly)\nRT_RainMedium()\n#end\n"
+                  : "#if(RT_Preview)\nRT_RainFog()\n#else\nRT_RainMedium()\n#end\n";
   }
   // The flash lights the whole scene from the bolt's top; RT_KeyLight comes from the
   // environment, so lightning_light is relative to its main light.
