@@ -206,8 +206,16 @@ TEST_F(PovrayFolderCli, CtrlCInALongPrewarmStopsWithinASecondAndTheRunResumes) {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_EQ(code, 128 + sig) << read_all(log);
-    // The requirement is one second; the margin is for a machine busy with other builds.
-    EXPECT_LT(seconds, 2.0) << "stopping took " << seconds << " s";
+    // The requirement is one second; the margin is for a machine busy with other builds. Under
+    // AddressSanitizer the whole run is four to five times slower (this test 55–73 s against
+    // 15 s) and the exit ends in LeakSanitizer's scan, and 2.0057 s was once measured on a busy
+    // machine: a sanitized build checks that the stop is prompt, the normal build the second.
+#if defined(__SANITIZE_ADDRESS__)
+    constexpr double kStopLimitSeconds = 4.0;
+#else
+    constexpr double kStopLimitSeconds = 2.0;
+#endif
+    EXPECT_LT(seconds, kStopLimitSeconds) << "stopping took " << seconds << " s";
     EXPECT_TRUE(contains(read_all(log), "run the same command again to resume")) << read_all(log);
   }
   const auto resumed = run_raintrace(args, dir / "resumed.log");
