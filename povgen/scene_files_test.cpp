@@ -167,11 +167,15 @@ TEST(SceneFiles, RainMediumStartsWhereTheSimulatedRainEnds) {
   EXPECT_TRUE(contains(inc, "emission RT_RainExtinction*RT_RainSurround"));
   // Camera at z = −5 looking along +z: the half-space z >= 2 (depth 7), within 200 m.
   EXPECT_TRUE(contains(inc, "sphere{<0,1.6,-5>,200}\n plane{<0,0,-1>,-2}"));
-  // Preview without a plate: the fog form, capped at 200 m (transmit e^−200σ); final: media.
+  // Preview without a plate: the fog form, capped at 200 m (transmit e^−200σ); final: media,
+  // unless the environment declares that the fog form is all the medium would add.
   EXPECT_TRUE(contains(inc,
                        "fog{fog_type 1 distance 1/RT_RainExtinction color rgb "
                        "RT_RainSurround transmit exp(-200*RT_RainExtinction)}"));
-  EXPECT_TRUE(contains(inc, "#if(RT_Preview)\nRT_RainFog()\n#else\nRT_RainMedium()\n#end\n"));
+  EXPECT_TRUE(
+      contains(inc,
+               "#ifndef(RT_RainAsFog) #declare RT_RainAsFog=0; #end\n"
+               "#if(RT_Preview | RT_RainAsFog)\nRT_RainFog()\n#else\nRT_RainMedium()\n#end\n"));
   // With the plate it is traced into the plate and left out of the frames that draw it.
   look.environment_plate = true;
   EXPECT_TRUE(contains(scene_inc_text(look), "#if(!RT_LightsOnly)\nRT_RainMedium()\n#end\n"));

@@ -219,7 +219,7 @@ TEST(PovRayWetRoad, TheFilmTakesTheRainsSurfaceFromTheGround) {
     const std::string ground =
         "#declare RT_RingHeight = function(x, y, z) { " + std::to_string(slope) +
         " * x }\n"
-        "#macro RT_ResolvedBumps(Amount, Scale) bumps Amount scale Scale #end\n";
+        "#macro RT_ResolvedGranite(Amount, Scale) granite Amount scale 4 * Scale #end\n";
     // The road in the water of the street's road plane (ior 1.33, for Fresnel's share), under
     // the ceiling.
     const std::string scene =

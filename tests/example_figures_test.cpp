@@ -721,14 +721,57 @@ int isolated_glints(const Image& image, int x0, int x1, int y0, int y1, float by
   return count;
 }
 
+// default exported at final quality (no environment plate): frame 1 at 320×180, antialiased as
+// a final frame, with the rain beyond far_m drawn as the street declares it (RT_RainAsFog: its
+// fog form, which scatters no light, since the glows draw the lamps' share) and as media
+// (Declare=RT_RainAsFog=0), which scatter the lights that still reach them. The two must differ
+// (the switch works) by under 1 % of the mean luma on average: what the fog form leaves out is
+// the sky's faint fill. Measured: 0.45 %; 0.34 % on frame 16 at 1280×720, where POV-Ray took
+// 8 % less time with the fog form.
+TEST(ExampleFigures, DefaultStreetRainMediumIsItsFogFormAtFinalQuality) {
+  if (!have_povray()) GTEST_SKIP() << "povray is not installed";
+  const fs::path dir = work_dir("default_rain_fog");
+  std::string scene = read_text(fs::path{RAINTRACE_SOURCE_DIR} / "examples" / "default.toml");
+  const std::string preview = "quality = \"preview\"";
+  ASSERT_NE(scene.find(preview), std::string::npos) << "the default no longer previews";
+  scene.replace(scene.find(preview), preview.size(), "quality = \"final\"");
+  const fs::path toml = dir.parent_path() / "default_rain_fog.toml";
+  std::ofstream(toml) << scene;
+  export_scene(toml, dir, "1");
+  ASSERT_NE(read_text(dir / "scene.inc").find("#if(RT_Preview | RT_RainAsFog)"), std::string::npos);
+  const std::string options = "+FN16 File_Gamma=1.0 " + final_antialiasing_options();
+  const Image fog = render(dir, "frames/frame_0001.pov", "fog", 320, options);
+  const Image media =
+      render(dir, "frames/frame_0001.pov", "media", 320, options + " Declare=RT_RainAsFog=0");
+  ASSERT_EQ(fog.rgb.size(), media.rgb.size());
+  double difference = 0.0, level = 0.0;
+  for (int y = 0; y < fog.height; ++y) {
+    for (int x = 0; x < fog.width; ++x) {
+      difference += std::abs(fog.luma(x, y) - media.luma(x, y));
+      level += media.luma(x, y);
+    }
+  }
+  fs::remove_all(dir.parent_path());
+  ASSERT_GT(level, 0.0);
+  std::printf("rain as fog against media: mean |difference| %.4f of the mean luma\n",
+              difference / level);
+  EXPECT_GT(difference, 0.0) << "Declare=RT_RainAsFog=0 drew the same picture";
+  EXPECT_LT(difference / level, 0.01) << "the fog form leaves out light the media scatter";
+}
+
 // default: frame 1 at final quality, antialiased as a final export is, with the wet ground's relief
 // — the asphalt's aggregate and the puddles' rain roughness — drawn no finer than the pixels
 // resolve (the ground include's RT_NoiseSpans 2, the default) and at its true scale
 // (RT_NoiseSpans 0). Finer than a pixel, each antialiasing sample of a lamp's mirror image gets
 // its own tilt and the road glitters with single-pixel glints (blind viewers: "render noise");
 // resolved, the images break into patches a few pixels across. Over the road under the lamps'
-// images (x 200–440, y 200–359 of 640×360) the resolved ground must show under 0.45 of the
-// true scale's isolated glints, and fewer than 250. Measured: 191 resolved, 728 at the true
+// images (x 200–440, y 200–359 of 640×360) the resolved ground must show under 0.7 of the
+// true scale's isolated glints, and fewer than 600. Measured: 451 resolved, 785 at the true
+// scale (0.57) since the aggregate is a fractal (granite at 0.125) whose coarsest octave, the
+// 8 mm stones, is drawn resolved and whose finer octaves sparkle within its patches: four of
+// four blind viewers, two at 1280×720 and two at 640×360, chose its long streaks of fine
+// sparkle over the single octave's "scaly", "cell-like blobs" (2026-12-07). Until then the
+// bounds were 0.45 and 250: the single octave of 8 mm at 0.2 showed 191 resolved, 728 at the true
 // scale (0.26) since the final's antialiasing samples a pixel 2×2 at threshold 0.15; 200 and 604
 // (0.33) since the relief is the stones' 8 mm at amount 0.2 (antialiasing 3×3 at 0.2): it
 // breaks a lamp's image into a column of small glints, which five of six blind viewers chose
@@ -751,8 +794,8 @@ TEST(ExampleFigures, DefaultStreetRoadImagesBreakIntoPatchesNotGlints) {
   const int glints = isolated_glints(resolved, 200, 440, 200, 359, 0.02f);
   const int glitter = isolated_glints(true_scale, 200, 440, 200, 359, 0.02f);
   std::printf("isolated glints on the road: %d resolved, %d at the true scale\n", glints, glitter);
-  EXPECT_LT(glints, 0.45 * glitter) << "the resolved ground glitters like one drawn at true scale";
-  EXPECT_LT(glints, 250) << "the lamps' images on the road break into single-pixel glints";
+  EXPECT_LT(glints, 0.7 * glitter) << "the resolved ground glitters like one drawn at true scale";
+  EXPECT_LT(glints, 600) << "the lamps' images on the road break into single-pixel glints";
 }
 
 // Fine vertical structure in a rectangle: the mean of |L(x) − (L(x − 1) + L(x + 1))/2| along
