@@ -731,13 +731,7 @@ int isolated_glints(const Image& image, int x0, int x1, int y0, int y1, float by
 TEST(ExampleFigures, DefaultStreetRainMediumIsItsFogFormAtFinalQuality) {
   if (!have_povray()) GTEST_SKIP() << "povray is not installed";
   const fs::path dir = work_dir("default_rain_fog");
-  std::string scene = read_text(fs::path{RAINTRACE_SOURCE_DIR} / "examples" / "default.toml");
-  const std::string preview = "quality = \"preview\"";
-  ASSERT_NE(scene.find(preview), std::string::npos) << "the default no longer previews";
-  scene.replace(scene.find(preview), preview.size(), "quality = \"final\"");
-  const fs::path toml = dir.parent_path() / "default_rain_fog.toml";
-  std::ofstream(toml) << scene;
-  export_scene(toml, dir, "1");
+  export_default_with({{"quality =", "quality = \"final\""}}, dir, "1");
   ASSERT_NE(read_text(dir / "scene.inc").find("#if(RT_Preview | RT_RainAsFog)"), std::string::npos);
   const std::string options = "+FN16 File_Gamma=1.0 " + final_antialiasing_options();
   const Image fog = render(dir, "frames/frame_0001.pov", "fog", 320, options);
