@@ -760,8 +760,12 @@ TEST(ExampleFigures, DefaultStreetRainMediumIsItsFogFormAtFinalQuality) {
 // its own tilt and the road glitters with single-pixel glints (blind viewers: "render noise");
 // resolved, the images break into patches a few pixels across. Over the road under the lamps'
 // images (x 200–440, y 200–359 of 640×360) the resolved ground must show under 0.7 of the
-// true scale's isolated glints, and fewer than 600. Measured: 451 resolved, 785 at the true
-// scale (0.57) since the aggregate is a fractal (granite at 0.125) whose coarsest octave, the
+// true scale's isolated glints, and fewer than 850. Measured: 656 resolved, 1091 at the true
+// scale (0.60) since mirrors see a streetlight's lens blurred over four times its half sizes,
+// not twice (RT_LensBlur: more facets catch it, each fainter; both viewers of a blind pair saw
+// "smeared, ripple-broken streaks" where twice gave "round, evenly sized sparkle dots",
+// 2026-12-07); 451 and 785 (0.57), bounds 0.7 and 600, since the aggregate is a fractal
+// (granite at 0.125) whose coarsest octave, the
 // 8 mm stones, is drawn resolved and whose finer octaves sparkle within its patches: four of
 // four blind viewers, two at 1280×720 and two at 640×360, chose its long streaks of fine
 // sparkle over the single octave's "scaly", "cell-like blobs" (2026-12-07). Until then the
@@ -789,7 +793,7 @@ TEST(ExampleFigures, DefaultStreetRoadImagesBreakIntoPatchesNotGlints) {
   const int glitter = isolated_glints(true_scale, 200, 440, 200, 359, 0.02f);
   std::printf("isolated glints on the road: %d resolved, %d at the true scale\n", glints, glitter);
   EXPECT_LT(glints, 0.7 * glitter) << "the resolved ground glitters like one drawn at true scale";
-  EXPECT_LT(glints, 600) << "the lamps' images on the road break into single-pixel glints";
+  EXPECT_LT(glints, 850) << "the lamps' images on the road break into single-pixel glints";
 }
 
 // Fine vertical structure in a rectangle: the mean of |L(x) − (L(x − 1) + L(x + 1))/2| along
