@@ -109,7 +109,8 @@ TEST(PovRayRoadMarkings, WaitingLinesAlongTheLeftKerbRunDoubleThenSingle) {
   // clear of each worn rim: 0.26–0.29 m and 0.36–0.39 m out; between them 0.31–0.34 m; the
   // asphalt beyond, 0.45–0.6 m, and next to the kerb, 0.05–0.2 m. Each metre is clear of the
   // left-hand lamps (z = 16, 40): looking straight down, the wet road mirrors what hangs right
-  // above it, and a lamp's copy for mirrors reaches 1.1 m across (RT_LensBlur), to 3.7 m out.
+  // above it, and a lamp's copy for mirrors (RT_LensBlur) reaches 1.12 m either side of its lens
+  // at x = −2.6, to x = −3.72, into the strip measured here.
   const std::vector<double> double_lines = yellow_across_left_kerb(dir, "double", 10.0);
   const std::vector<double> single_line = yellow_across_left_kerb(dir, "single", 33.0);
   fs::remove_all(dir);

@@ -760,15 +760,17 @@ TEST(ExampleFigures, DefaultStreetRainMediumIsItsFogFormAtFinalQuality) {
 // its own tilt and the road glitters with single-pixel glints (blind viewers: "render noise");
 // resolved, the images break into patches a few pixels across. Over the road under the lamps'
 // images (x 200–440, y 200–359 of 640×360) the resolved ground must show under 0.7 of the
-// true scale's isolated glints, and fewer than 850. Measured: 656 resolved, 1091 at the true
-// scale (0.60) since mirrors see a streetlight's lens blurred over four times its half sizes,
-// not twice (RT_LensBlur: more facets catch it, each fainter; both viewers of a blind pair saw
-// "smeared, ripple-broken streaks" where twice gave "round, evenly sized sparkle dots",
-// 2026-12-07); 451 and 785 (0.57), bounds 0.7 and 600, since the aggregate is a fractal
-// (granite at 0.125) whose coarsest octave, the
-// 8 mm stones, is drawn resolved and whose finer octaves sparkle within its patches: four of
-// four blind viewers, two at 1280×720 and two at 640×360, chose its long streaks of fine
-// sparkle over the single octave's "scaly", "cell-like blobs" (2026-12-07). Until then the
+// true scale's isolated glints, and fewer than 850. The ratio is the check: a glint here is a
+// pixel brighter than its neighbours, and a wider mirrored lens raises both counts (more facets
+// catch it, each fainter); the count's bound only catches the road turning to glitter
+// everywhere. Measured: 656 resolved, 1091 at the true scale (0.60) since mirrors see a
+// streetlight's lens blurred over four times its half sizes, not twice (RT_LensBlur; both
+// viewers of a blind pair saw "smeared, ripple-broken streaks" where twice gave "round, evenly
+// sized sparkle dots", 2026-12-07); 451 and 785 (0.57), bounds 0.7 and 600, since the aggregate
+// is a fractal (granite at 0.125) whose coarsest octave, the 8 mm stones, is drawn resolved and
+// whose finer octaves sparkle within its patches: four of four blind viewers, two at 1280×720
+// and two at 640×360, chose its long streaks of fine sparkle over the single octave's "scaly",
+// "cell-like blobs" (2026-12-07). Until then the
 // bounds were 0.45 and 250: the single octave of 8 mm at 0.2 showed 191 resolved, 728 at the true
 // scale (0.26) since the final's antialiasing samples a pixel 2×2 at threshold 0.15; 200 and 604
 // (0.33) since the relief is the stones' 8 mm at amount 0.2 (antialiasing 3×3 at 0.2): it
