@@ -511,11 +511,13 @@ TEST(ExampleFigures, DefaultStreetShopWindowsMirrorTheStreet) {
 // default: frame 1 with the passer-by crossing the street (night_street's RT_Passerby 1, the
 // default) and without. Against the lamps' haze and the lit road the figure is a dark
 // silhouette. Row by row from its top, the pixels it darkens by 0.002 (linear) in the box x
-// 240–310, y 135–205 of 640×360 must make the shape of a person under an umbrella 39 m away,
-// where 1 m is 17.6 pixels: a canopy 1 m across (at least 12 pixels wide in the top 5 rows),
-// then a body about 0.45 m wide (rows 8–30 at most 10 pixels wide, and 20 of them darkened)
-// down to the feet 35 rows below the top, where the wet road's mirror image continues it.
-// Measured: the canopy 16 pixels wide, the body at most 6, 23 of its rows darkened.
+// 230–320, y 135–235 of 640×360 must make the shape of a person under an umbrella 27 m away,
+// where 1 m is 25 pixels: a canopy 1 m across (at least 18 pixels wide in the top 5 rows),
+// then a body about 0.45 m wide (rows 8–45 at most 16 pixels wide, and 34 of those 38
+// darkened) down to the feet 47 rows below the top, where the wet road's mirror image and the
+// figure's shadow on the road continue it.
+// Measured: the canopy 23 pixels wide, the body at most 9, 38 of 38 body rows. (At 39 m, until
+// 2026-12-07, in the box x 240–310, y 135–205: the canopy 16, the body at most 6, 23 of 23.)
 TEST(ExampleFigures, DefaultStreetHasSomeoneCrossingUnderAnUmbrella) {
   if (!have_povray()) GTEST_SKIP() << "povray is not installed";
   const auto [street, empty] =
@@ -523,20 +525,20 @@ TEST(ExampleFigures, DefaultStreetHasSomeoneCrossingUnderAnUmbrella) {
   ASSERT_EQ(street.width, 640);
   // Per row of the box from the first the figure darkens: how many pixels it darkens.
   std::vector<int> widths;
-  for (int y = 135; y < 205; ++y) {
-    const int width = pixels_brighter(empty, street, 240, 310, y, y + 1, 0.002f);
+  for (int y = 135; y < 235; ++y) {
+    const int width = pixels_brighter(empty, street, 230, 320, y, y + 1, 0.002f);
     if (width > 0 || !widths.empty()) widths.push_back(width);
   }
-  ASSERT_GE(widths.size(), 31u) << "nobody crosses the street, or the figure is too short";
+  ASSERT_GE(widths.size(), 46u) << "nobody crosses the street, or the figure is too short";
   const int canopy = *std::max_element(widths.begin(), widths.begin() + 5);
-  const int body = *std::max_element(widths.begin() + 8, widths.begin() + 31);
+  const int body = *std::max_element(widths.begin() + 8, widths.begin() + 46);
   const auto body_rows =
-      std::count_if(widths.begin() + 8, widths.begin() + 31, [](int width) { return width > 0; });
-  std::printf("passer-by: canopy %d pixels wide, body at most %d, %d of 23 body rows darkened\n",
+      std::count_if(widths.begin() + 8, widths.begin() + 46, [](int width) { return width > 0; });
+  std::printf("passer-by: canopy %d pixels wide, body at most %d, %d of 38 body rows darkened\n",
               canopy, body, static_cast<int>(body_rows));
-  EXPECT_GE(canopy, 12) << "no umbrella over the figure";
-  EXPECT_LE(body, 10) << "the figure is too wide to be a person";
-  EXPECT_GE(body_rows, 20) << "no body under the umbrella";
+  EXPECT_GE(canopy, 18) << "no umbrella over the figure";
+  EXPECT_LE(body, 16) << "the figure is too wide to be a person";
+  EXPECT_GE(body_rows, 34) << "no body under the umbrella";
 }
 
 // Mean red over green of `image` in the rectangle x0 <= x < x1, y0 <= y < y1: how orange the
