@@ -143,8 +143,9 @@ TEST(PovRayLampStreak, AMirrorShowsALampsLightOnce) {
 // 3 %, spread wider and no brighter: the pixels it lights past a hundredth of the even copy's
 // brightest at least 8 times as many (the ellipse, RT_LensBlur = 4 times the lens's half sizes,
 // has 4π = 12.6 times the lens's area, its light falling to 0 at the rim), its brightest at most
-// 0.3 of the even copy's (its middle is 12/(16π) = 0.239 of the lens's radiance). Measured: 1.023 of the light, 10.9 times the pixels, 0.23 of the peak
-// (at RT_LensBlur 2, until 2026-12-07: 1.025, 3.1 times, 0.90).
+// 0.3 of the even copy's (its middle is 12/(16π) = 0.239 of the lens's radiance). Measured:
+// 1.023 of the light, 10.9 times the pixels, 0.23 of the peak (at RT_LensBlur 2, until
+// 2026-12-07: 1.025, 3.1 times, 0.90).
 TEST(PovRayLampStreak, AStreetlightsMirroredCopyIsItsLensBlurredWithItsLightKept) {
   SKIP_WITHOUT_POVRAY();
   const fs::path dir = testing::folder_with_street("povray_test_lens_blur");
