@@ -696,18 +696,24 @@ void export_default_with(const std::vector<std::pair<std::string, std::string>>&
   export_scene(scene, dir, frames);
 }
 
-// The antialiasing lines of a final-quality export's scene.ini (the default's), as POV-Ray
-// command-line options: what `raintrace render` traces a final frame with.
-std::string final_antialiasing_options() {
-  const fs::path dir = work_dir("final_ini");
-  export_default_with({{"quality =", "quality = \"final\""}}, dir, "1");
-  std::istringstream ini(read_text(dir / "scene.ini"));
+// The antialiasing lines of an exported folder's scene.ini, as POV-Ray command-line options.
+std::string antialiasing_options_of(const fs::path& exported) {
+  std::istringstream ini(read_text(exported / "scene.ini"));
   std::string options;
   for (std::string line; std::getline(ini, line);) {
     for (const char* key : {"Antialias", "Sampling_Method", "Jitter"}) {
       if (line.rfind(key, 0) == 0) options += " " + line;
     }
   }
+  return options;
+}
+
+// The antialiasing of a final-quality export of the default: what `raintrace render` traces a
+// final frame with.
+std::string final_antialiasing_options() {
+  const fs::path dir = work_dir("final_ini");
+  export_default_with({{"quality =", "quality = \"final\""}}, dir, "1");
+  const std::string options = antialiasing_options_of(dir);
   fs::remove_all(dir);
   return options;
 }
@@ -740,7 +746,9 @@ TEST(ExampleFigures, DefaultStreetRainMediumIsItsFogFormAtFinalQuality) {
   const fs::path dir = work_dir("default_rain_fog");
   export_default_with({{"quality =", "quality = \"final\""}}, dir, "1");
   ASSERT_NE(read_text(dir / "scene.inc").find("#if(RT_Preview | RT_RainAsFog)"), std::string::npos);
-  const std::string options = "+FN16 File_Gamma=1.0 " + final_antialiasing_options();
+  const std::string antialiasing = antialiasing_options_of(dir);
+  ASSERT_NE(antialiasing.find("Antialias=on"), std::string::npos) << antialiasing;
+  const std::string options = "+FN16 File_Gamma=1.0 " + antialiasing;
   const Image fog = render(dir, "frames/frame_0001.pov", "fog", 320, options);
   const Image media =
       render(dir, "frames/frame_0001.pov", "media", 320, options + " Declare=RT_RainAsFog=0");
