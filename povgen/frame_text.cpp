@@ -326,13 +326,19 @@ void write_sphere(Emitter& out, const glm::vec3& centre, float radius) {
   out.text("}\n");
 }
 
-// Each group of segments twice: the channel itself (RT_BoltCore, widened to at least half a
-// pixel with its light scaled to match), and around it the light that rain and cloud scatter out
-// of it (RT_BoltGlow, scene.inc), a merge so that segments meeting at a joint do not glow twice.
+// A segment's core is drawn at least half a pixel wide, its emission scaled to keep its light.
+float core_light(const CylinderValue& c, float light) {
+  return c.core_radius > 0.0f ? light * c.radius / c.core_radius : 0.0f;
+}
+
+// Each group of segments three times: the channel itself (RT_BoltCore, widened to at least half
+// a pixel with its light scaled to match); the copy of it that mirrors see in its place
+// (RT_BoltMirrored, scene.inc: wider and fainter, the same light); and around it the light that
+// rain and cloud scatter out of it (RT_BoltGlow, scene.inc), a merge so that segments meeting at
+// a joint do not glow twice.
 // Both macros' emission is per unit of surface, set for a trunk of kBoltLightTrunkRadius_m; a
 // bolt whose trunk is drawn thinner or thicker has both scaled by the inverse, so that it sends
 // the same light per metre of channel (before, halving trunk_radius_m halved the bolt's light).
-
 void write_bolts(Emitter& out, const std::vector<BoltValue>& bolts) {
   if (bolts.empty()) return;
   // Bolts are light, not rain: the rain mask leaves them out.
@@ -344,10 +350,23 @@ void write_bolts(Emitter& out, const std::vector<BoltValue>& bolts) {
     for (const CylinderValue& c : bolt.segments) {
       write_cylinder(out, c, c.core_radius);
       out.text(" RT_BoltCore(");
-      out.number(c.core_radius > 0.0f ? light * c.radius / c.core_radius : 0.0f);
+      out.number(core_light(c, light));
       out.text(")}\n");
     }
-    out.text("no_shadow hollow\n}\nmerge{\n");
+    out.text("no_shadow hollow\n#if(RT_BoltBlur>0) no_reflection #end\n}\n");
+    out.text("#if(RT_BoltBlur>0)\nunion{\n");
+    for (const CylinderValue& c : bolt.segments) {
+      out.text("RT_BoltMirrored(");
+      write_point(out, c.start);
+      out.text(",");
+      write_point(out, c.end);
+      out.text(",");
+      out.number(c.core_radius);
+      out.text(",");
+      out.number(core_light(c, light));
+      out.text(")\n");
+    }
+    out.text("no_shadow hollow no_image\n}\n#end\nmerge{\n");
     for (const CylinderValue& c : bolt.segments) {
       write_cylinder(out, c, c.radius * kBoltGlowRadii);
       out.text("}\n");
