@@ -336,8 +336,8 @@ float core_light(const CylinderValue& c, float light) {
 // (RT_BoltMirrored, scene.inc: wider and fainter, the same light); and around it the light that
 // rain and cloud scatter out of it (RT_BoltGlow, scene.inc), a merge so that segments meeting at
 // a joint do not glow twice.
-// Both macros' emission is per unit of surface, set for a trunk of kBoltLightTrunkRadius_m; a
-// bolt whose trunk is drawn thinner or thicker has both scaled by the inverse, so that it sends
+// All three draws' emission is per unit of surface, set for a trunk of kBoltLightTrunkRadius_m;
+// a bolt whose trunk is drawn thinner or thicker has each scaled by the inverse, so that it sends
 // the same light per metre of channel (before, halving trunk_radius_m halved the bolt's light).
 void write_bolts(Emitter& out, const std::vector<BoltValue>& bolts) {
   if (bolts.empty()) return;
@@ -366,7 +366,7 @@ void write_bolts(Emitter& out, const std::vector<BoltValue>& bolts) {
       out.number(core_light(c, light));
       out.text(")\n");
     }
-    out.text("no_shadow hollow no_image\n}\n#end\nmerge{\n");
+    out.text("no_shadow hollow no_image no_radiosity\n}\n#end\nmerge{\n");
     for (const CylinderValue& c : bolt.segments) {
       write_cylinder(out, c, c.radius * kBoltGlowRadii);
       out.text("}\n");

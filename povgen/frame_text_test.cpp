@@ -69,7 +69,7 @@ TEST(FrameText, GoldenTinyFrame) {
       "#if(RT_BoltBlur>0)\n"
       "union{\n"
       "RT_BoltMirrored(<0,100,50>,<2,0,50>,1,0.125)\n"
-      "no_shadow hollow no_image\n"
+      "no_shadow hollow no_image no_radiosity\n"
       "}\n"
       "#end\n"
       "merge{\n"

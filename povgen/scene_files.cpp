@@ -163,8 +163,8 @@ std::string environment_with_plate_text(const ExportParams& look, const std::str
 // that the light per metre stays.
 // Mirrors see the channel blurred (RT_BoltMirrored, drawn by the frames): RT_BoltBlur times as
 // wide and as many times fainter, the same light per metre, where the camera sees it sharp.
-// Rain-rippled water is a mirror of countless facets tilted a few degrees: a channel half a
-// metre across, 600·B bright, is caught by a few of them, each at full brightness, and the
+// Rain-rippled water is a mirror of countless facets tilted a few degrees: a channel
+// 1.2 m across, 600·B bright, is caught by a few of them, each at full brightness, and the
 // road mirrored it as "a field of uniform circular dots… like a particle effect"; wider and
 // fainter it is caught by more facets, each fainter, and reads as "a continuous streak,
 // stretched sideways by ripples" (both viewers of a blind pair chose it, 2026-12-07), as the
