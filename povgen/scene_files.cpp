@@ -263,6 +263,10 @@ std::string scene_inc_text(const ExportParams& look) {
     const double scattering = kMediaScatteringShare * look.fog.density_per_m;
     text += "#declare RT_LampHaze=" + format_number(scattering * (tint.x + tint.y + tint.z) / 3.0) +
             ";\n#declare RT_LampCones=0;\n";
+    // And its extinction within its sphere, for what the environment draws nearer the camera
+    // than the light it stands for (night_street's sign halos).
+    text += "#declare RT_MediaExtinction=" + format_number(look.fog.density_per_m) +
+            ";\n#declare RT_MediaDepth=" + format_number(look.fog.depth_m) + ";\n";
   }
   if (look.fog.mode == FogMode::ground && look.fog.density_per_m > 0.0) {
     // The environment's painted lamp haze is this mist where it stands around the lamps.

@@ -218,6 +218,8 @@ TEST(SceneFiles, FogModes) {
   const auto media_environment = media.find("#include \"environment.inc\"");
   EXPECT_LT(media.find("#declare RT_LampHaze=0.02275;"), media_environment);
   EXPECT_LT(media.find("#declare RT_LampCones=0;"), media_environment);
+  EXPECT_LT(media.find("#declare RT_MediaExtinction=0.05;"), media_environment);
+  EXPECT_LT(media.find("#declare RT_MediaDepth=4;"), media_environment);
   EXPECT_FALSE(contains(media, "RT_GroundFogDensity"));
   look.fog.density_per_m = 0.0;
   EXPECT_FALSE(contains(scene_inc_text(look), "absorption rgb"));
