@@ -197,9 +197,10 @@ std::string hazy_word_scene(double haze, bool word = true) {
 // within a few degrees: the halo's light, summed over the picture, must be about that share of
 // the word's own (for the two lobes, each half of the scattering, about 0.75 of it falls within
 // the halo's reach), between 0.5 and 1.2 times σ·D; in twice the mist, twice as much (within 5 %).
-// Measured: 0.774 σ·D at σ = 0.01 /m, 2.02 times in 0.02; 0.318 while each point's halo was cut
-// off within the softening radius instead of keeping its light there, and about 0.38 (a reviewer's
-// run) with the sheet through the word instead of pulled toward the camera, the wall taking half.
+// Measured: 0.779 σ·D at σ = 0.01 /m, 2.01 times in 0.02 (0.774 and 2.02 while each point's
+// halo was flat within its softening radius); 0.318 while each point's halo was cut off within
+// that radius instead of keeping its light there, and about 0.38 (a reviewer's run) with the
+// sheet through the word instead of pulled toward the camera, the wall taking half.
 TEST(PovRayLettering, ALitWordsHaloInTheMistIsTheLightTheMistScattersOutOfItsWay) {
   SKIP_WITHOUT_POVRAY();
   const fs::path dir = testing::folder_with_street("povray_test_word_halo");
